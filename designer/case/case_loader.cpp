@@ -1,0 +1,208 @@
+#include "designer/case/case_loader.hpp"
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "designer/case/material_reader.hpp"
+#include "designer/case/table_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace feedflow {
+namespace {
+
+constexpr std::string_view kRootKeys[] = {"case", "material", "hopper", "chute", "drum", "design"};
+constexpr std::string_view kCaseKeys[] = {"name", "description", "material"};
+constexpr std::string_view kEquipmentKeys[] = {"hopper", "chute", "drum"};
+constexpr const char* kDefaultMaterial = "loblolly_pine";
+
+toml::table parse_case_file(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError(path, "", "no such case file (see `feedflow cases` for the shipped ones)");
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return toml::parse(text.str(), path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line), "",
+                     "not valid TOML: " + std::string(e.description()));
+  }
+}
+
+// "0.5" -> number, "true" -> boolean, anything else ("32deg", "wedge") -> string.
+void assign_override_value(toml::table& table, std::string_view key, const std::string& text) {
+  double number = 0.0;
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, number);
+  if (!text.empty() && ec == std::errc() && ptr == end && std::isfinite(number)) {
+    table.insert_or_assign(key, number);
+  } else if (text == "true" || text == "false") {
+    table.insert_or_assign(key, text == "true");
+  } else {
+    std::string s = text;
+    if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'') && s.back() == s.front())
+      s = s.substr(1, s.size() - 2);
+    table.insert_or_assign(key, s);
+  }
+}
+
+void apply_override(toml::table& root, const SetOverride& o) {
+  std::vector<std::string> parts;
+  std::stringstream split(o.key);
+  for (std::string part; std::getline(split, part, '.');) {
+    if (part.empty()) throw InputError("--set", o.key, "empty part in the key; write e.g. hopper.semi_angle=32deg");
+    parts.push_back(part);
+  }
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i]);
+    if (!next) {
+      table->insert(parts[i], toml::table{});
+      next = table->get(parts[i]);
+    }
+    if (!next->is_table())
+      throw InputError("--set", o.key, "\"" + parts[i] + "\" holds a value, not a table");
+    table = next->as_table();
+  }
+  assign_override_value(*table, parts.back(), o.value);
+}
+
+const toml::table* table_at(const toml::table& root, std::string_view key, const std::string& file) {
+  const toml::node* node = root.get(key);
+  if (!node) return nullptr;
+  if (!node->is_table())
+    throw InputError(location(*node, file), std::string(key), "expected a table [" + std::string(key) + "]");
+  return node->as_table();
+}
+
+std::string read_case_text(const toml::table& table, std::string_view key, const std::string& file) {
+  const toml::node* node = table.get(key);
+  if (!node) return "";
+  TableContext ctx{"case", file};
+  return read_text(*node, "case." + std::string(key), ctx);
+}
+
+template <class Equipment>
+Equipment read_equipment(const toml::table& table, const char* name,
+                         std::span<const FieldSpec<Equipment>> fields, const std::string& file,
+                         std::vector<std::string>& warnings) {
+  Equipment e;
+  const TableContext ctx{name, file};
+  read_fields(table, fields, e, ctx);
+  raise_problems(check(e), table, ctx, &warnings);
+  return e;
+}
+
+Material resolve_material(const toml::table& root, const toml::table* case_table,
+                          const std::string& file, const MaterialLibrary& library) {
+  const toml::table* material_table = table_at(root, "material", file);
+  const toml::node* named = case_table ? case_table->get("material") : nullptr;
+  const bool standalone = !named && material_table && material_table->contains("name");
+  if (standalone) {
+    Material m = read_material(*material_table, file, "case file " + file);
+    m.origin = file;
+    return m;
+  }
+  std::string name = kDefaultMaterial;
+  if (named) name = read_text(*named, "case.material", TableContext{"case", file});
+  Material m;
+  try {
+    m = library.load(name);
+  } catch (const InputError& e) {
+    if (!e.where().empty()) throw;  // the material file itself is broken
+    throw InputError(named ? location(*named, file) : file, "case.material", e.what());
+  }
+  if (material_table) override_material(m, *material_table, file, "case file " + file, "material");
+  return m;
+}
+
+}  // namespace
+
+SetOverride parse_set_override(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set", text, "expected key=value, e.g. --set hopper.semi_angle=32deg");
+  return {text.substr(0, eq), text.substr(eq + 1)};
+}
+
+Case load_case(const std::string& path, std::span<const SetOverride> overrides) {
+  return load_case(path, overrides, MaterialLibrary::standard(fs::path(path).parent_path()));
+}
+
+Case load_case(const std::string& path, std::span<const SetOverride> overrides,
+               const MaterialLibrary& materials) {
+  toml::table root = parse_case_file(path);
+  for (const auto& o : overrides) apply_override(root, o);
+
+  const TableContext root_ctx{"", path};
+  for (auto&& [k, node] : root) {
+    require_known_key(node, k.str(), kRootKeys, root_ctx);
+    table_at(root, k.str(), path);
+  }
+
+  Case c;
+  c.file = path;
+  const toml::table* case_table = table_at(root, "case", path);
+  if (case_table) {
+    const TableContext ctx{"case", path};
+    for (auto&& [k, node] : *case_table) require_known_key(node, k.str(), kCaseKeys, ctx);
+    c.name = read_case_text(*case_table, "name", path);
+    c.description = read_case_text(*case_table, "description", path);
+  }
+  if (c.name.empty()) c.name = fs::path(path).stem().string();
+
+  std::vector<std::string_view> present;
+  for (const auto key : kEquipmentKeys)
+    if (root.contains(key)) present.push_back(key);
+  if (present.empty())
+    throw InputError(path, "", "a case needs one of the tables [hopper], [chute] or [drum]");
+  if (present.size() > 1)
+    throw InputError(location(*root.get(present[1]), path), std::string(present[1]),
+                     "a case describes one piece of equipment, but this one has both [" +
+                         std::string(present[0]) + "] and [" + std::string(present[1]) + "]");
+
+  c.material = resolve_material(root, case_table, path, materials);
+
+  const auto& equipment_table = *root.get(present[0])->as_table();
+  if (present[0] == "hopper") {
+    auto h = read_equipment(equipment_table, "hopper", hopper_fields(), path, c.warnings);
+    if (!h.wall_friction_angle) h.wall_friction_angle = c.material.bulk.wall_friction_angle;
+    c.equipment = h;
+  } else if (present[0] == "chute") {
+    c.equipment = read_equipment(equipment_table, "chute", chute_fields(), path, c.warnings);
+  } else {
+    c.equipment = read_equipment(equipment_table, "drum", drum_fields(), path, c.warnings);
+  }
+
+  if (const toml::table* design = table_at(root, "design", path)) {
+    std::vector<std::string> keys;
+    TableContext ctx{"design", path};
+    ctx.keys_given = &keys;
+    read_fields(*design, design_target_fields(), c.design, ctx);
+    raise_problems(check(c.design, c.kind(), keys), *design, ctx, &c.warnings);
+  }
+  return c;
+}
+
+CaseSummary summarize_case(const std::string& path) {
+  CaseSummary s;
+  s.name = fs::path(path).stem().string();
+  try {
+    const toml::table root = parse_case_file(path);
+    if (const toml::table* case_table = table_at(root, "case", path)) {
+      if (auto name = read_case_text(*case_table, "name", path); !name.empty()) s.name = name;
+      s.description = read_case_text(*case_table, "description", path);
+    }
+    for (const auto key : kEquipmentKeys)
+      if (root.contains(key)) s.kind = std::string(key);
+  } catch (const InputError& e) {
+    s.description = std::string("(invalid: ") + e.what() + ")";
+  }
+  return s;
+}
+
+}  // namespace feedflow

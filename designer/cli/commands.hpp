@@ -1,0 +1,16 @@
+#pragma once
+// The subcommands of `feedflow`. Each adds itself to the app and, when run, stores its exit
+// code in `exit_code`. Errors are thrown (InputError, NotAvailable, NumericalFailure) and turned
+// into messages and exit codes by main.
+#include <CLI/CLI.hpp>
+
+namespace feedflow {
+
+void add_design_command(CLI::App& app, int& exit_code);
+void add_materials_command(CLI::App& app, int& exit_code);
+void add_cases_command(CLI::App& app, int& exit_code);
+void add_version_command(CLI::App& app, int& exit_code);
+// simulate, sweep, report, bench: reserved names that say "not yet available".
+void add_reserved_commands(CLI::App& app, int& exit_code);
+
+}  // namespace feedflow

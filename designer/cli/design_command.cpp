@@ -1,0 +1,67 @@
+// feedflow design <case>: the designer's answer to a case file.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/cli/command_options.hpp"
+#include "designer/cli/commands.hpp"
+#include "designer/cli/output_files.hpp"
+#include "designer/design/design_check.hpp"
+#include "reports/results_json.hpp"
+#include "reports/text_summary.hpp"
+
+namespace feedflow {
+namespace {
+
+struct DesignArguments {
+  std::string case_file;
+  CommandOptions options;
+};
+
+int run_design(const DesignArguments& args) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SetOverride> overrides;
+  for (const auto& s : args.options.sets) overrides.push_back(parse_set_override(s));
+
+  const Case c = load_case(args.case_file, overrides);
+  if (!args.options.quiet)
+    for (const auto& w : c.warnings) std::cerr << "feedflow: warning: " << w << '\n';
+  if (args.options.verbose)
+    std::cerr << "feedflow: material " << c.material.name << " from " << c.material.origin << '\n';
+
+  DesignRecord record = design_check(c);
+  record.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::filesystem::path folder =
+      args.options.out.empty() ? std::filesystem::path("out") / c.name
+                               : std::filesystem::path(args.options.out);
+  const std::string summary = text_summary(record);
+  const std::string json = to_json(record).dump(2) + "\n";
+  const auto written = write_run_outputs(folder, json, summary, args.options);
+
+  if (args.options.human_output()) {
+    std::cout << summary << "\nWritten: ";
+    for (std::size_t i = 0; i < written.size(); ++i)
+      std::cout << (i ? ", " : "") << written[i].string();
+    std::cout << '\n';
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_design_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<DesignArguments>();
+  auto* command = app.add_subcommand(
+      "design", "answer the design questions of a case from the reduced models");
+  command->add_option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
+      ->required()
+      ->type_name("CASE");
+  add_case_options(*command, args->options);
+  command->callback([args, &exit_code] { exit_code = run_design(*args); });
+}
+
+}  // namespace feedflow

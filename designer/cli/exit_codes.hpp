@@ -1,0 +1,12 @@
+#pragma once
+// Exit codes of the feedflow command (README, "Command line").
+namespace feedflow {
+
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitBadInput = 2,        // usage, case file, units, ranges
+  kExitNotAvailable = 3,    // a command this build does not have yet
+  kExitNumericalFailure = 4,
+};
+
+}  // namespace feedflow

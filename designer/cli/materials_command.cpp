@@ -1,0 +1,90 @@
+// feedflow materials [name]: the materials feedflow knows, or every parameter of one of them.
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "designer/case/material_library.hpp"
+#include "designer/cli/command_options.hpp"
+#include "designer/cli/commands.hpp"
+#include "designer/design/case_inputs.hpp"
+
+namespace feedflow {
+namespace {
+
+struct MaterialsArguments {
+  std::string name;
+  CommandOptions options;
+};
+
+void list_materials(const MaterialLibrary& library, const CommandOptions& options) {
+  const auto entries = library.list();
+  if (options.json_to_stdout()) {
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const auto& e : entries)
+      j.push_back({{"name", e.name}, {"origin", e.origin}, {"description", e.description}});
+    std::cout << j.dump(2) << '\n';
+    return;
+  }
+  if (options.quiet) return;
+  std::printf("%-20s %-44s %s\n", "NAME", "ORIGIN", "DESCRIPTION");
+  for (const auto& e : entries)
+    std::printf("%-20s %-44s %s\n", e.name.c_str(), e.origin.c_str(), e.description.c_str());
+}
+
+void show_material(const MaterialLibrary& library, const std::string& name,
+                   const CommandOptions& options) {
+  const Material m = library.load(name);
+  const auto parameters = material_parameters(m);
+  if (options.json_to_stdout()) {
+    nlohmann::ordered_json j{{"name", m.name}, {"description", m.description}, {"origin", m.origin}};
+    auto& p = j["parameters"] = nlohmann::ordered_json::object();
+    for (const auto& row : parameters) {
+      nlohmann::ordered_json value;
+      std::visit([&](const auto& v) { value = v; }, row.value.value);
+      p[row.value.key] = {{"value", value}, {"unit", row.value.si_unit},
+                          {"display", row.value.display}, {"description", row.description},
+                          {"source", row.source}};
+    }
+    std::cout << j.dump(2) << '\n';
+    return;
+  }
+  if (options.quiet) return;
+  std::cout << m.name << ": " << m.description << "\norigin: " << m.origin << "\n";
+  std::string section;
+  for (const auto& row : parameters) {
+    const auto dot = row.value.key.rfind('.');
+    const std::string this_section = row.value.key.substr(0, dot);
+    if (this_section != section) {
+      section = this_section;
+      std::cout << "\n[" << section << "]\n";
+    }
+    std::printf("  %-20s %-16s %s\n  %-20s %-16s source: %s\n",
+                row.value.key.substr(dot + 1).c_str(), row.value.display.c_str(),
+                row.description.c_str(), "", "", row.source.c_str());
+  }
+}
+
+}  // namespace
+
+void add_materials_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<MaterialsArguments>();
+  auto* command = app.add_subcommand(
+      "materials", "list the known materials, or show every parameter of one with unit and source");
+  command->add_option("name", args->name, "material to show, e.g. loblolly_pine")->type_name("NAME");
+  add_json_option(*command, args->options);
+  add_verbosity_options(*command, args->options);
+  command->callback([args, &exit_code] {
+    const auto library = MaterialLibrary::standard();
+    if (args->options.verbose)
+      for (const auto& f : library.folders())
+        std::cerr << "feedflow: material folder " << f.string() << '\n';
+    if (args->name.empty())
+      list_materials(library, args->options);
+    else
+      show_material(library, args->name, args->options);
+    exit_code = 0;
+  });
+}
+
+}  // namespace feedflow

@@ -1,0 +1,34 @@
+// Subcommands whose names are taken but whose work comes with later releases. They accept any
+// arguments and say plainly that they are not available (exit code 3); they never pretend.
+#include "designer/cli/commands.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+struct Reserved {
+  const char* name;
+  const char* what;
+};
+
+constexpr Reserved kReserved[] = {
+    {"simulate", "verify a case with a full simulation (DEM or CEL-FEM)"},
+    {"sweep", "run a what-if sweep over case values"},
+    {"report", "turn a results JSON or a run into a PDF and HTML design report"},
+    {"bench", "benchmark run time against error for the solvers"},
+};
+
+}  // namespace
+
+void add_reserved_commands(CLI::App& app, int&) {
+  for (const auto& r : kReserved) {
+    auto* command = app.add_subcommand(r.name, std::string(r.what) + " (not yet available)");
+    command->allow_extras();
+    const std::string name = r.name;
+    command->callback([name] {
+      throw NotAvailable("feedflow " + name + " is not yet available in this build");
+    });
+  }
+}
+
+}  // namespace feedflow

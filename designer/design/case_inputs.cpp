@@ -1,0 +1,90 @@
+#include "designer/design/case_inputs.hpp"
+
+#include "models/units/quantity_format.hpp"
+
+namespace feedflow {
+namespace {
+
+struct DescribedInput {
+  InputValue value;
+  std::string_view description;
+};
+
+template <class Record>
+void append(std::vector<DescribedInput>& out, const std::string& prefix,
+            std::span<const FieldSpec<Record>> fields, const Record& record) {
+  for (const auto& f : fields) {
+    const std::string key = prefix + "." + std::string(f.key);
+    if (f.is_label()) {
+      const std::string& label = record.*(f.label);
+      out.push_back({{key, label, "", label}, f.description});
+      continue;
+    }
+    double si = 0.0;
+    if (f.number) {
+      si = record.*(f.number);
+    } else {
+      const auto& optional = record.*(f.optional_number);
+      if (!optional) continue;
+      si = *optional;
+    }
+    out.push_back({{key, si, si_unit(f.dimension), format_quantity(si, f.display_unit)},
+                   f.description});
+  }
+}
+
+std::vector<DescribedInput> described_material(const Material& m) {
+  std::vector<DescribedInput> out;
+  append(out, "bulk", bulk_fields(), m.bulk);
+  if (m.psd) append(out, "psd", psd_fields(), *m.psd);
+  if (m.hypoplastic) append(out, "hypoplastic", hypoplastic_fields(), *m.hypoplastic);
+  if (m.dem) {
+    append(out, "dem.particle", dem_particle_fields(), m.dem->particle);
+    append(out, "dem.particle_particle", dem_contact_fields(), m.dem->particle_particle);
+    append(out, "dem.particle_wall", dem_contact_fields(), m.dem->particle_wall);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<MaterialParameter> material_parameters(const Material& m) {
+  std::vector<MaterialParameter> out;
+  for (auto& d : described_material(m)) {
+    const auto source = m.sources.find(d.value.key);
+    out.push_back({std::move(d.value), std::string(d.description),
+                   source != m.sources.end() ? source->second : "unknown"});
+  }
+  return out;
+}
+
+std::vector<InputValue> case_inputs(const Case& c) {
+  std::vector<DescribedInput> described;
+  std::visit(
+      [&](const auto& equipment) {
+        using T = std::decay_t<decltype(equipment)>;
+        if constexpr (std::is_same_v<T, Hopper>) append(described, "hopper", hopper_fields(), equipment);
+        if constexpr (std::is_same_v<T, Chute>) append(described, "chute", chute_fields(), equipment);
+        if constexpr (std::is_same_v<T, Drum>) append(described, "drum", drum_fields(), equipment);
+      },
+      c.equipment);
+  std::vector<InputValue> out;
+  for (auto& d : described) out.push_back(std::move(d.value));
+
+  // Only the targets that belong to this kind of equipment.
+  described.clear();
+  append(described, "design", design_target_fields(), c.design);
+  constexpr std::string_view kDesignPrefix = "design.";
+  for (auto& d : described)
+    if (design_target_kind(std::string_view(d.value.key).substr(kDesignPrefix.size())) == c.kind())
+      out.push_back(std::move(d.value));
+
+  out.push_back({"material.name", c.material.name, "", c.material.name});
+  for (auto& d : described_material(c.material)) {
+    d.value.key = "material." + d.value.key;
+    out.push_back(std::move(d.value));
+  }
+  return out;
+}
+
+}  // namespace feedflow

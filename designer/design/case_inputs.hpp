@@ -1,0 +1,22 @@
+#pragma once
+// The resolved inputs of a case as the record lists them: every field in SI with its unit, and
+// how a person reads it.
+#include <string>
+#include <vector>
+
+#include "designer/case/case.hpp"
+#include "models/core/design_record.hpp"
+
+namespace feedflow {
+
+std::vector<InputValue> case_inputs(const Case& c);
+
+// One parameter of a material, as `feedflow materials NAME` lists it.
+struct MaterialParameter {
+  InputValue value;         // key without the "material." prefix: "bulk.density"
+  std::string description;  // what the parameter means
+  std::string source;       // where the value comes from
+};
+std::vector<MaterialParameter> material_parameters(const Material& m);
+
+}  // namespace feedflow

@@ -1,0 +1,71 @@
+#include "models/equipment/hopper.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "models/units/quantity_format.hpp"
+
+namespace feedflow {
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr std::string_view kShapes[] = {"wedge", "conical"};
+}  // namespace
+
+double Hopper::outlet_height() const { return 0.5 * outlet_width / std::tan(semi_angle); }
+double Hopper::transition_height() const { return 0.5 * bin_width / std::tan(semi_angle); }
+
+std::span<const FieldSpec<Hopper>> hopper_fields() {
+  static const FieldSpec<Hopper> fields[] = {
+      label_field<Hopper>("shape", &Hopper::shape, kShapes,
+                          "wedge (plane flow, slot outlet) or conical (circular outlet)"),
+      number_field<Hopper>("semi_angle", &Hopper::semi_angle, dim::angle, "deg",
+                           Range::open(0.0, 90.0 * kDeg),
+                           "hopper wall angle measured from the vertical"),
+      number_field<Hopper>("outlet_width", &Hopper::outlet_width, dim::length, "mm",
+                           Range::positive(), "slot width (wedge) or outlet diameter (conical)"),
+      number_field<Hopper>("fill_height", &Hopper::fill_height, dim::length, "m",
+                           Range::positive(),
+                           "height of the material top above the virtual apex of the hopper"),
+      number_field<Hopper>("bin_width", &Hopper::bin_width, dim::length, "m", Range::positive(),
+                           "width (wedge) or diameter (conical) of the vertical bin section"),
+      optional_number_field<Hopper>("slot_length", &Hopper::slot_length, dim::length, "m",
+                                    Range::positive(),
+                                    "out-of-plane length of a wedge hopper's slot outlet"),
+      optional_number_field<Hopper>("wall_friction_angle", &Hopper::wall_friction_angle,
+                                    dim::angle, "deg", Range::half_open(0.0, 90.0 * kDeg),
+                                    "wall friction angle of the material on the hopper wall "
+                                    "(defaults to the material's)"),
+  };
+  return fields;
+}
+
+std::vector<FieldProblem> check(const Hopper& h) {
+  std::vector<FieldProblem> problems;
+  if (h.outlet_width >= h.bin_width)
+    problems.push_back({"outlet_width",
+                        "must be smaller than bin_width (" + format_quantity(h.bin_width, "mm") +
+                            "), got " + format_quantity(h.outlet_width, "mm")});
+  if (h.fill_height <= h.outlet_height())
+    problems.push_back({"fill_height",
+                        "must be above the outlet, which sits " +
+                            format_quantity(h.outlet_height(), "m") +
+                            " above the virtual apex; got " + format_quantity(h.fill_height, "m")});
+  if (h.is_wedge()) {
+    if (!h.slot_length)
+      problems.push_back({"slot_length", "is required for a wedge hopper (out-of-plane length "
+                                         "of the slot outlet, e.g. \"0.5 m\")"});
+    else if (*h.slot_length < 3.0 * h.outlet_width)
+      problems.push_back({"slot_length",
+                          "is shorter than 3 outlet widths (" +
+                              format_quantity(3.0 * h.outlet_width, "mm") +
+                              "): end walls disturb plane flow, so plane-flow results err "
+                              "on the unsafe side",
+                          false});
+  } else if (h.slot_length) {
+    problems.push_back({"slot_length", "applies to wedge hoppers only; remove it for a conical "
+                                       "hopper"});
+  }
+  return problems;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,123 @@
+#include "reports/results_json.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace feedflow {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json value_json(const std::variant<double, std::string>& v) {
+  return std::visit([](const auto& x) { return json(x); }, v);
+}
+
+std::variant<double, std::string> value_from(const json& j, const std::string& where) {
+  if (j.is_number()) return j.get<double>();
+  if (j.is_string()) return j.get<std::string>();
+  throw std::invalid_argument(where + ": expected a number or a string");
+}
+
+const json& field(const json& j, const char* key, const std::string& where) {
+  if (!j.is_object() || !j.contains(key))
+    throw std::invalid_argument(where + ": missing \"" + key + "\"");
+  return j.at(key);
+}
+
+// inputs are nested objects keyed by the parts of the dotted key.
+void put_nested(json& root, const std::string& dotted, json value) {
+  json* node = &root;
+  std::stringstream parts(dotted);
+  std::string part, next;
+  std::getline(parts, part, '.');
+  while (std::getline(parts, next, '.')) {
+    node = &(*node)[part];
+    part = next;
+  }
+  (*node)[part] = std::move(value);
+}
+
+void collect_nested(const json& node, const std::string& prefix, const json& units,
+                    std::vector<InputValue>& out) {
+  for (const auto& [key, value] : node.items()) {
+    const std::string dotted = prefix.empty() ? key : prefix + "." + key;
+    if (value.is_object()) {
+      collect_nested(value, dotted, units, out);
+      continue;
+    }
+    InputValue in;
+    in.key = dotted;
+    in.value = value_from(value, "inputs." + dotted);
+    if (units.contains(dotted)) in.si_unit = units.at(dotted).get<std::string>();
+    in.display = value.is_string() ? value.get<std::string>() : value.dump();
+    if (!in.si_unit.empty()) in.display += " " + in.si_unit;
+    out.push_back(std::move(in));
+  }
+}
+
+}  // namespace
+
+json to_json(const DesignRecord& r) {
+  json j;
+  j["feedflow"] = r.feedflow_version;
+  j["case"] = {{"name", r.case_name},
+               {"kind", to_string(r.kind)},
+               {"file", r.case_file},
+               {"description", r.description}};
+  json inputs = json::object();
+  json units = json::object();
+  for (const auto& in : r.inputs) {
+    put_nested(inputs, in.key, value_json(in.value));
+    if (!in.si_unit.empty()) units[in.key] = in.si_unit;
+  }
+  j["inputs"] = std::move(inputs);
+  j["input_units"] = std::move(units);
+  json results = json::object();
+  for (const auto& [name, e] : r.results) {
+    json q = {{"value", value_json(e.value)},
+              {"unit", e.unit},
+              {"model", e.model},
+              {"rung", to_string(e.rung)}};
+    q["low"] = e.low ? json(*e.low) : json(nullptr);
+    q["high"] = e.high ? json(*e.high) : json(nullptr);
+    results[name] = std::move(q);
+  }
+  j["results"] = std::move(results);
+  j["verdict"] = {{"status", to_string(r.verdict.status)}, {"reasons", r.verdict.reasons}};
+  j["timing"] = {{"wall_s", r.wall_seconds}};
+  return j;
+}
+
+DesignRecord design_record_from_json(const json& j) {
+  DesignRecord r;
+  try {
+    r.feedflow_version = field(j, "feedflow", "results").get<std::string>();
+    const json& c = field(j, "case", "results");
+    r.case_name = field(c, "name", "case").get<std::string>();
+    r.kind = equipment_kind_from_string(field(c, "kind", "case").get<std::string>());
+    r.case_file = field(c, "file", "case").get<std::string>();
+    r.description = c.value("description", "");
+    const json units = j.value("input_units", json::object());
+    collect_nested(field(j, "inputs", "results"), "", units, r.inputs);
+    for (const auto& [name, q] : field(j, "results", "results").items()) {
+      const std::string where = "results." + name;
+      Estimate e;
+      e.value = value_from(field(q, "value", where), where + ".value");
+      e.unit = field(q, "unit", where).get<std::string>();
+      if (q.contains("low") && !q.at("low").is_null()) e.low = q.at("low").get<double>();
+      if (q.contains("high") && !q.at("high").is_null()) e.high = q.at("high").get<double>();
+      e.model = field(q, "model", where).get<std::string>();
+      e.rung = rung_from_string(field(q, "rung", where).get<std::string>());
+      r.results.emplace_back(name, std::move(e));
+    }
+    const json& v = field(j, "verdict", "results");
+    r.verdict.status = verdict_status_from_string(field(v, "status", "verdict").get<std::string>());
+    r.verdict.reasons = field(v, "reasons", "verdict").get<std::vector<std::string>>();
+    r.wall_seconds = field(field(j, "timing", "results"), "wall_s", "timing").get<double>();
+  } catch (const json::exception& e) {
+    throw std::invalid_argument(std::string("results JSON: ") + e.what());
+  }
+  return r;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,22 @@
+#pragma once
+// The results JSON, the machine-readable record every computing command writes. Its shape is
+// stable (README, "Results JSON"):
+//   {"feedflow": version,
+//    "case": {"name", "kind", "file", "description"},
+//    "inputs": {nested by dotted key, SI numbers or labels},
+//    "input_units": {dotted key: SI unit},
+//    "results": {quantity: {"value", "unit", "low", "high", "model", "rung"}},
+//    "verdict": {"status", "reasons"},
+//    "timing": {"wall_s"}}
+#include <nlohmann/json.hpp>
+
+#include "models/core/design_record.hpp"
+
+namespace feedflow {
+
+nlohmann::ordered_json to_json(const DesignRecord& record);
+
+// Reads a results JSON back; throws std::invalid_argument naming the offending field.
+DesignRecord design_record_from_json(const nlohmann::ordered_json& json);
+
+}  // namespace feedflow
