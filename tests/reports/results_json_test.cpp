@@ -1,0 +1,86 @@
+// The results JSON keeps the documented shape and reads back to the same record.
+#include <gtest/gtest.h>
+
+#include "reports/results_json.hpp"
+#include "reports/text_summary.hpp"
+
+namespace feedflow {
+namespace {
+
+DesignRecord sample() {
+  DesignRecord r;
+  r.feedflow_version = "0.1.0";
+  r.case_name = "pilot_hopper";
+  r.kind = EquipmentKind::hopper;
+  r.case_file = "cases/pilot_hopper.toml";
+  r.description = "test";
+  r.inputs = {{"hopper.semi_angle", 0.5235987755982988, "rad", "30 deg"},
+              {"hopper.shape", std::string("wedge"), "", "wedge"},
+              {"material.bulk.density", 290.0, "kg/m^3", "290 kg/m^3"}};
+  r.results = {{"critical_outlet_width", {0.0236, "m", 0.018, 0.031, "Jenike/Enstad", Rung::L0}},
+               {"flow_pattern", {std::string("mass"), "", std::nullopt, std::nullopt, "Arnold-McLean", Rung::L0}}};
+  r.verdict = {VerdictStatus::pass, {"outlet 60 mm >= 1.2 x 23.6 mm"}};
+  r.wall_seconds = 0.0012;
+  return r;
+}
+
+// Every documented top-level field is present with the documented type.
+TEST(ResultsJson, HasTheDocumentedShape) {
+  const auto j = to_json(sample());
+  EXPECT_EQ(j.at("feedflow"), "0.1.0");
+  for (const char* key : {"name", "kind", "file"}) EXPECT_TRUE(j.at("case").at(key).is_string());
+  EXPECT_EQ(j.at("case").at("kind"), "hopper");
+  EXPECT_DOUBLE_EQ(j.at("inputs").at("hopper").at("semi_angle").get<double>(), 0.5235987755982988);
+  EXPECT_EQ(j.at("inputs").at("material").at("bulk").at("density"), 290.0);
+  EXPECT_EQ(j.at("input_units").at("hopper.semi_angle"), "rad");
+  const auto& q = j.at("results").at("critical_outlet_width");
+  for (const char* key : {"value", "unit", "low", "high", "model", "rung"}) EXPECT_TRUE(q.contains(key)) << key;
+  EXPECT_EQ(q.at("rung"), "L0");
+  EXPECT_TRUE(j.at("results").at("flow_pattern").at("low").is_null());
+  EXPECT_EQ(j.at("verdict").at("status"), "pass");
+  EXPECT_TRUE(j.at("verdict").at("reasons").is_array());
+  EXPECT_TRUE(j.at("timing").at("wall_s").is_number());
+}
+
+// Writing and reading back gives the same record, results in the same order.
+TEST(ResultsJson, RoundTrips) {
+  const DesignRecord a = sample();
+  const DesignRecord b = design_record_from_json(nlohmann::ordered_json::parse(to_json(a).dump()));
+  EXPECT_EQ(b.case_name, a.case_name);
+  EXPECT_EQ(b.kind, a.kind);
+  ASSERT_EQ(b.results.size(), 2u);
+  EXPECT_EQ(b.results[0].first, "critical_outlet_width");
+  EXPECT_DOUBLE_EQ(std::get<double>(b.results[0].second.value), 0.0236);
+  EXPECT_DOUBLE_EQ(*b.results[0].second.high, 0.031);
+  EXPECT_EQ(std::get<std::string>(b.results[1].second.value), "mass");
+  EXPECT_FALSE(b.results[1].second.low.has_value());
+  EXPECT_EQ(b.verdict.status, VerdictStatus::pass);
+  ASSERT_EQ(b.inputs.size(), 3u);
+  EXPECT_EQ(b.inputs[0].key, "hopper.semi_angle");
+  EXPECT_EQ(b.inputs[0].si_unit, "rad");
+}
+
+// A malformed results file is refused naming the missing field.
+TEST(ResultsJson, MalformedIsRefused) {
+  auto j = to_json(sample());
+  j["results"]["flow_pattern"].erase("rung");
+  try {
+    design_record_from_json(j);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("results.flow_pattern"), std::string::npos) << e.what();
+  }
+}
+
+// The text summary shows inputs and results with their units, the band and the verdict.
+TEST(TextSummary, ShowsUnitsBandAndVerdict) {
+  const std::string t = text_summary(sample());
+  EXPECT_NE(t.find("30 deg"), std::string::npos) << t;
+  EXPECT_NE(t.find("0.0236 m  [0.018 .. 0.031 m]"), std::string::npos) << t;
+  EXPECT_NE(t.find("Verdict: PASS"), std::string::npos) << t;
+  EXPECT_NE(t.find("1.2 ms"), std::string::npos) << t;
+  EXPECT_EQ(t.find("290 kg/m^3"), std::string::npos) << "material details belong to `feedflow materials`";
+}
+
+}  // namespace
+}  // namespace feedflow
