@@ -1,0 +1,139 @@
+// Smoke tests of the real `feedflow` executable as a user runs it: output files, exit codes,
+// stdout/stderr discipline.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using feedflow::testing::run_feedflow;
+using feedflow::testing::slurp;
+
+namespace {
+
+// A scratch folder holding a copy of cases/ (as a user's checkout would).
+class FeedflowCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           (std::string("feedflow_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy(fs::path(FEEDFLOW_SOURCE_DIR) / "cases", dir_ / "cases", fs::copy_options::recursive);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+// The demo command: exit 0, a summary with units on stdout, results.json and results.txt written.
+TEST_F(FeedflowCli, DesignPilotHopperWritesResults) {
+  const auto r = run_feedflow("design cases/pilot_hopper.toml", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("semi angle                30 deg"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Verdict:"), std::string::npos) << r.out;
+  const auto json = nlohmann::json::parse(slurp(dir_ / "out/pilot_hopper/results.json"));
+  EXPECT_EQ(json.at("case").at("name"), "pilot_hopper");
+  EXPECT_EQ(json.at("case").at("kind"), "hopper");
+  EXPECT_NEAR(json.at("inputs").at("hopper").at("outlet_width").get<double>(), 0.06, 1e-12);
+  EXPECT_TRUE(json.at("results").is_object());
+  EXPECT_TRUE(fs::exists(dir_ / "out/pilot_hopper/results.txt"));
+}
+
+// Each shipped case runs through `design` and records its kind.
+TEST_F(FeedflowCli, DesignRunsEveryShippedCase) {
+  for (const auto* name : {"inclined_plane_29_5", "inclined_plane_37", "rotating_drum_20rpm"}) {
+    SCOPED_TRACE(name);
+    const auto r = run_feedflow(std::string("design cases/") + name + ".toml -q", dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(r.out.empty()) << "quiet run printed: " << r.out;
+    EXPECT_TRUE(fs::exists(dir_ / "out" / name / "results.json"));
+  }
+}
+
+// --json - sends only valid JSON to stdout; --set values reach the resolved inputs.
+TEST_F(FeedflowCli, JsonToStdoutAndSet) {
+  const auto r = run_feedflow(
+      "design cases/pilot_hopper.toml --json - --set hopper.semi_angle=32deg --set "
+      "'material.bulk.density=250 kg/m^3'",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);  // throws if anything else is on stdout
+  EXPECT_NEAR(json.at("inputs").at("hopper").at("semi_angle").get<double>(), 32 * M_PI / 180, 1e-12);
+  EXPECT_NEAR(json.at("inputs").at("material").at("bulk").at("density").get<double>(), 250, 1e-12);
+}
+
+// --out and --json FILE put the files where asked.
+TEST_F(FeedflowCli, OutFolderAndJsonFile) {
+  const auto r = run_feedflow("design cases/rotating_drum_20rpm.toml --out runs/a --json r.json", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "runs/a/results.json"));
+  EXPECT_TRUE(fs::exists(dir_ / "runs/a/results.txt"));
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir_ / "r.json")).at("case").at("kind"), "drum");
+}
+
+// Bad input: exit 2, the message names file, line and key, nothing on stdout, nothing written.
+TEST_F(FeedflowCli, BadCaseExitsTwoAndWritesNothing) {
+  std::ofstream(dir_ / "cases/bad.toml") << "[hopper]\nshape = \"wedge\"\nsemi_angle = \"30 mm\"\n";
+  const auto r = run_feedflow("design cases/bad.toml", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("cases/bad.toml:3: hopper.semi_angle:"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  const auto typo = run_feedflow("design cases/pilot_hopper.toml --set hopper.outlet_widht=5mm", dir_);
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_NE(typo.err.find("did you mean \"outlet_width\""), std::string::npos) << typo.err;
+  EXPECT_EQ(run_feedflow("design cases/missing.toml", dir_).exit_code, 2);
+  EXPECT_EQ(run_feedflow("design", dir_).exit_code, 2);            // usage
+  EXPECT_EQ(run_feedflow("frobnicate", dir_).exit_code, 2);        // unknown subcommand
+  EXPECT_EQ(run_feedflow("", dir_).exit_code, 2);                  // no subcommand
+}
+
+// Reserved commands say "not yet available" and exit 3, whatever their arguments.
+TEST_F(FeedflowCli, ReservedCommandsExitThree) {
+  for (const auto* cmd : {"simulate cases/pilot_hopper.toml --solver dem", "sweep x", "report r.json", "bench"}) {
+    SCOPED_TRACE(cmd);
+    const auto r = run_feedflow(cmd, dir_);
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+  }
+}
+
+// materials lists the pine; materials NAME shows every parameter with unit and source.
+TEST_F(FeedflowCli, MaterialsListAndDetail) {
+  const auto list = run_feedflow("materials", dir_);
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_NE(list.out.find("loblolly_pine"), std::string::npos);
+  const auto one = run_feedflow("materials loblolly_pine", dir_);
+  EXPECT_EQ(one.exit_code, 0);
+  for (const char* text : {"187.6 kPa", "47.3 deg", "290 kg/m^3", "1.5 mm", "source: seed Table 2"})
+    EXPECT_NE(one.out.find(text), std::string::npos) << text;
+  const auto json = nlohmann::json::parse(run_feedflow("materials loblolly_pine --json -", dir_).out);
+  EXPECT_EQ(json.at("parameters").at("hypoplastic.h_s").at("value"), 187600.0);
+  EXPECT_EQ(run_feedflow("materials oak", dir_).exit_code, 2);
+}
+
+// cases lists every case file with its kind and description.
+TEST_F(FeedflowCli, CasesListing) {
+  const auto r = run_feedflow("cases", dir_);
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* name : {"pilot_hopper.toml", "inclined_plane_29_5.toml", "inclined_plane_37.toml",
+                           "rotating_drum_20rpm.toml"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name;
+  EXPECT_NE(r.out.find("drum"), std::string::npos);
+}
+
+// --help works on every subcommand; version prints the version.
+TEST_F(FeedflowCli, HelpAndVersion) {
+  for (const auto* cmd : {"--help", "design --help", "materials --help", "cases --help",
+                          "simulate --help", "version --help"}) {
+    SCOPED_TRACE(cmd);
+    const auto r = run_feedflow(cmd, dir_);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
+  }
+  EXPECT_NE(run_feedflow("version", dir_).out.find("feedflow 0."), std::string::npos);
+}
+
+}  // namespace
