@@ -103,7 +103,7 @@ Material resolve_material(const toml::table& root, const toml::table* case_table
   const toml::node* named = case_table ? case_table->get("material") : nullptr;
   const bool standalone = !named && material_table && material_table->contains("name");
   if (standalone) {
-    Material m = read_material(*material_table, file, "case file " + file);
+    Material m = read_material(*material_table, file, "case file " + file, "material");
     m.origin = file;
     return m;
   }

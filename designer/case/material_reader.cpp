@@ -119,10 +119,10 @@ class MaterialLayer {
 }  // namespace
 
 Material read_material(const toml::table& table, const std::string& file,
-                       const std::string& default_source) {
+                       const std::string& default_source, const std::string& prefix) {
   Material m;
   m.origin = file;
-  MaterialLayer(m, file, default_source, "", false).read(table);
+  MaterialLayer(m, file, default_source, prefix, false).read(table);
   return m;
 }
 

@@ -9,9 +9,10 @@
 namespace feedflow {
 
 // Reads a complete material. `file` names the source for error messages; `default_source` is
-// recorded for values that carry no source of their own.
+// recorded for values that carry no source of their own; `prefix` is the table's dotted path in
+// its file ("" for a material file, "material" for a case's own material).
 Material read_material(const toml::table& table, const std::string& file,
-                       const std::string& default_source);
+                       const std::string& default_source, const std::string& prefix = "");
 
 // Applies a partial material table over `material` (a case's [material] table, `--set
 // material.*`). Values given without a source are recorded as coming from `default_source`.

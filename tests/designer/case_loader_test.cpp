@@ -226,3 +226,24 @@ TEST_F(TempCase, DesignTargetsBelongToTheirEquipment) {
 
 }  // namespace
 }  // namespace feedflow
+
+namespace feedflow {
+namespace {
+
+// A case may define its own complete material in [material] (with a name, no case.material).
+TEST_F(TempCase, StandaloneMaterialInCase) {
+  const std::string text = std::string(kGoodHopper) +
+                           "[material]\nname = \"sawdust\"\ndescription = \"test\"\n"
+                           "[material.bulk]\ndensity = \"200 kg/m^3\"\nwall_friction_angle = \"20 deg\"\n";
+  const Case c = load_case(write(text));
+  EXPECT_EQ(c.material.name, "sawdust");
+  EXPECT_NEAR(c.material.bulk.density, 200.0, 1e-12);
+  EXPECT_FALSE(c.material.hypoplastic.has_value());
+  EXPECT_NEAR(*std::get<Hopper>(c.equipment).wall_friction_angle, 20 * kDeg, 1e-12);
+  // Incomplete: the bulk section's required keys are named.
+  const std::string m = error_of(std::string(kGoodHopper) + "[material]\nname = \"x\"\n[material.bulk]\ndensity = 1\n");
+  EXPECT_NE(m.find("material.bulk.wall_friction_angle: missing"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace feedflow
