@@ -11,7 +11,7 @@ endif
 DEB_PACKAGES := cmake make g++ pkg-config \
 	libeigen3-dev libsundials-dev libgsl-dev libopenmpi-dev openmpi-bin libhdf5-dev \
 	libosmesa6-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev libcairo2-dev \
-	libgtest-dev libbenchmark-dev poppler-utils
+	libgtest-dev libbenchmark-dev poppler-utils fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: deps build demo test validate clean

@@ -55,6 +55,48 @@ void collect_nested(const json& node, const std::string& prefix, const json& uni
   }
 }
 
+json axis_json(const ChartAxis& a) {
+  return {{"label", a.label}, {"unit", a.unit}, {"logarithmic", a.logarithmic}};
+}
+
+ChartAxis axis_from(const json& j, const std::string& where) {
+  return {field(j, "label", where).get<std::string>(), field(j, "unit", where).get<std::string>(),
+          j.value("logarithmic", false)};
+}
+
+json chart_json(const Chart& c) {
+  json series = json::array();
+  for (const auto& s : c.series) {
+    json one = {{"label", s.label}, {"style", to_string(s.style)}, {"x", s.x}, {"y", s.y}};
+    if (!s.y_upper.empty()) one["y_upper"] = s.y_upper;
+    series.push_back(std::move(one));
+  }
+  return {{"id", c.id},       {"title", c.title},   {"x", axis_json(c.x)},
+          {"y", axis_json(c.y)}, {"series", series}, {"note", c.note}};
+}
+
+Chart chart_from(const json& j) {
+  Chart c;
+  c.id = field(j, "id", "charts").get<std::string>();
+  const std::string where = "charts." + c.id;
+  c.title = field(j, "title", where).get<std::string>();
+  c.x = axis_from(field(j, "x", where), where + ".x");
+  c.y = axis_from(field(j, "y", where), where + ".y");
+  c.note = j.value("note", "");
+  for (const auto& s : field(j, "series", where)) {
+    ChartSeries one;
+    one.label = field(s, "label", where).get<std::string>();
+    one.style = series_style_from_string(field(s, "style", where).get<std::string>());
+    one.x = field(s, "x", where).get<std::vector<double>>();
+    one.y = field(s, "y", where).get<std::vector<double>>();
+    one.y_upper = s.value("y_upper", std::vector<double>{});
+    if (one.x.size() != one.y.size() || (!one.y_upper.empty() && one.y_upper.size() != one.x.size()))
+      throw std::invalid_argument(where + ": series \"" + one.label + "\" has x and y of different lengths");
+    c.series.push_back(std::move(one));
+  }
+  return c;
+}
+
 }  // namespace
 
 json to_json(const DesignRecord& r) {
@@ -70,8 +112,12 @@ json to_json(const DesignRecord& r) {
     put_nested(inputs, in.key, value_json(in.value));
     if (!in.si_unit.empty()) units[in.key] = in.si_unit;
   }
+  json sources = json::object();
+  for (const auto& in : r.inputs)
+    if (!in.source.empty()) sources[in.key] = in.source;
   j["inputs"] = std::move(inputs);
   j["input_units"] = std::move(units);
+  j["input_sources"] = std::move(sources);
   json results = json::object();
   for (const auto& [name, e] : r.results) {
     json q = {{"value", value_json(e.value)},
@@ -84,6 +130,10 @@ json to_json(const DesignRecord& r) {
   }
   j["results"] = std::move(results);
   j["verdict"] = {{"status", to_string(r.verdict.status)}, {"reasons", r.verdict.reasons}};
+  j["charts"] = json::array();
+  for (const auto& c : r.charts) j["charts"].push_back(chart_json(c));
+  j["assumptions"] = r.assumptions;
+  j["provenance"] = {{"command_line", r.command_line}};
   j["timing"] = {{"wall_s", r.wall_seconds}};
   return j;
 }
@@ -114,6 +164,12 @@ DesignRecord design_record_from_json(const json& j) {
     r.verdict.status = verdict_status_from_string(field(v, "status", "verdict").get<std::string>());
     r.verdict.reasons = field(v, "reasons", "verdict").get<std::vector<std::string>>();
     r.wall_seconds = field(field(j, "timing", "results"), "wall_s", "timing").get<double>();
+    const json sources = j.value("input_sources", json::object());
+    for (auto& in : r.inputs)
+      if (sources.contains(in.key)) in.source = sources.at(in.key).get<std::string>();
+    for (const auto& c : j.value("charts", json::array())) r.charts.push_back(chart_from(c));
+    r.assumptions = j.value("assumptions", std::vector<std::string>{});
+    if (j.contains("provenance")) r.command_line = j.at("provenance").value("command_line", "");
   } catch (const json::exception& e) {
     throw std::invalid_argument(std::string("results JSON: ") + e.what());
   }

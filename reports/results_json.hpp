@@ -4,9 +4,11 @@
 //   {"feedflow": version,
 //    "case": {"name", "kind", "file", "description"},
 //    "inputs": {nested by dotted key, SI numbers or labels},
-//    "input_units": {dotted key: SI unit},
+//    "input_units": {dotted key: SI unit}, "input_sources": {dotted key: source},
 //    "results": {quantity: {"value", "unit", "low", "high", "model", "rung"}},
 //    "verdict": {"status", "reasons"},
+//    "charts": [{"id", "title", "x": axis, "y": axis, "series": [...], "note"}],
+//    "assumptions": [...], "provenance": {"command_line"},
 //    "timing": {"wall_s"}}
 #include <nlohmann/json.hpp>
 

@@ -44,7 +44,7 @@ void show_material(const MaterialLibrary& library, const std::string& name,
       std::visit([&](const auto& v) { value = v; }, row.value.value);
       p[row.value.key] = {{"value", value}, {"unit", row.value.si_unit},
                           {"display", row.value.display}, {"description", row.description},
-                          {"source", row.source}};
+                          {"source", row.value.source}};
     }
     std::cout << j.dump(2) << '\n';
     return;
@@ -61,7 +61,7 @@ void show_material(const MaterialLibrary& library, const std::string& name,
     }
     std::printf("  %-20s %-16s %s\n  %-20s %-16s source: %s\n",
                 row.value.key.substr(dot + 1).c_str(), row.value.display.c_str(),
-                row.description.c_str(), "", "", row.source.c_str());
+                row.description.c_str(), "", "", row.value.source.c_str());
   }
 }
 

@@ -43,6 +43,10 @@ std::vector<DescribedInput> described_material(const Material& m) {
     append(out, "dem.particle_particle", dem_contact_fields(), m.dem->particle_particle);
     append(out, "dem.particle_wall", dem_contact_fields(), m.dem->particle_wall);
   }
+  for (auto& d : out) {
+    const auto source = m.sources.find(d.value.key);
+    d.value.source = source != m.sources.end() ? source->second : "unknown";
+  }
   return out;
 }
 
@@ -50,11 +54,8 @@ std::vector<DescribedInput> described_material(const Material& m) {
 
 std::vector<MaterialParameter> material_parameters(const Material& m) {
   std::vector<MaterialParameter> out;
-  for (auto& d : described_material(m)) {
-    const auto source = m.sources.find(d.value.key);
-    out.push_back({std::move(d.value), std::string(d.description),
-                   source != m.sources.end() ? source->second : "unknown"});
-  }
+  for (auto& d : described_material(m))
+    out.push_back({std::move(d.value), std::string(d.description)});
   return out;
 }
 
@@ -79,7 +80,7 @@ std::vector<InputValue> case_inputs(const Case& c) {
     if (design_target_kind(std::string_view(d.value.key).substr(kDesignPrefix.size())) == c.kind())
       out.push_back(std::move(d.value));
 
-  out.push_back({"material.name", c.material.name, "", c.material.name});
+  out.push_back({"material.name", c.material.name, "", c.material.name, c.material.origin});
   for (auto& d : described_material(c.material)) {
     d.value.key = "material." + d.value.key;
     out.push_back(std::move(d.value));

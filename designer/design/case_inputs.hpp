@@ -13,9 +13,8 @@ std::vector<InputValue> case_inputs(const Case& c);
 
 // One parameter of a material, as `feedflow materials NAME` lists it.
 struct MaterialParameter {
-  InputValue value;         // key without the "material." prefix: "bulk.density"
+  InputValue value;         // key without the "material." prefix: "bulk.density"; with its source
   std::string description;  // what the parameter means
-  std::string source;       // where the value comes from
 };
 std::vector<MaterialParameter> material_parameters(const Material& m);
 

@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "models/core/chart.hpp"
 #include "models/core/estimate.hpp"
 
 namespace feedflow {
@@ -21,6 +22,7 @@ struct InputValue {
   std::variant<double, std::string> value;  // SI number, or a label ("wedge")
   std::string si_unit;                      // "rad"; empty for labels and pure numbers
   std::string display;                      // "30 deg"
+  std::string source;                       // where the value comes from (materials); may be empty
 };
 
 enum class VerdictStatus { pass, marginal, fail, unknown };
@@ -41,6 +43,9 @@ struct DesignRecord {
   std::vector<InputValue> inputs;
   std::vector<std::pair<std::string, Estimate>> results;  // quantity name -> estimate, in order
   Verdict verdict;
+  std::vector<Chart> charts;          // curves for the report
+  std::vector<std::string> assumptions;  // what the models assume, and which way each errs
+  std::string command_line;           // how the record was produced
   double wall_seconds = 0.0;
 };
 

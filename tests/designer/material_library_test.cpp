@@ -64,8 +64,8 @@ TEST(MaterialLibrary, EveryPineParameterHasASource) {
   EXPECT_EQ(params.size(), 4u + 3u + 8u + 2u + 12u + 12u);
   for (const auto& p : params) {
     SCOPED_TRACE(p.value.key);
-    EXPECT_NE(p.source, "unknown");
-    EXPECT_FALSE(p.source.empty());
+    EXPECT_NE(p.value.source, "unknown");
+    EXPECT_FALSE(p.value.source.empty());
     EXPECT_FALSE(p.description.empty());
   }
 }
