@@ -37,7 +37,7 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 demo: build
-	./$(BUILD)/feedflow design cases/pilot_hopper.toml
+	./$(BUILD)/feedflow design cases/pilot_hopper.toml --report
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS) -LE long

@@ -4,11 +4,13 @@
 
 #include "designer/cli/commands.hpp"
 #include "designer/cli/exit_codes.hpp"
+#include "designer/cli/invocation.hpp"
 #include "models/core/errors.hpp"
 #include "models/core/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace feedflow;
+  record_invocation(argc, argv);
   CLI::App app{"feedflow: hopper, chute and drum design for bulk solids, verified by simulation",
                "feedflow"};
   app.set_version_flag("--version", std::string("feedflow ") + kVersion);
@@ -18,6 +20,7 @@ int main(int argc, char** argv) {
   add_materials_command(app, exit_code);
   add_cases_command(app, exit_code);
   add_version_command(app, exit_code);
+  add_report_command(app, exit_code);
   add_reserved_commands(app, exit_code);
 
   try {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "models/units/quantity_format.hpp"
+#include "reports/result_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -13,21 +14,9 @@ std::string upper(std::string s) {
   return s;
 }
 
-// "hopper.semi_angle" -> "semi angle"
-std::string label_of(const std::string& key) {
-  std::string s = key.substr(key.rfind('.') + 1);
-  std::replace(s.begin(), s.end(), '_', ' ');
-  return s;
-}
-
 std::string value_text(const Estimate& e) {
-  if (!e.is_number()) return std::get<std::string>(e.value);
-  const double v = std::get<double>(e.value);
-  std::string s = format_number(v) + (e.unit.empty() ? "" : " " + e.unit);
-  if (e.low && e.high)
-    s += "  [" + format_number(*e.low) + " .. " + format_number(*e.high) +
-         (e.unit.empty() ? "" : " " + e.unit) + "]";
-  return s;
+  const std::string band = estimate_band_text(e);
+  return estimate_value_text(e) + (band.empty() ? "" : "  [" + band + "]");
 }
 
 void row(std::ostringstream& out, const std::string& label, const std::string& value,
@@ -52,13 +41,13 @@ std::string text_summary(const DesignRecord& r) {
   for (const auto& in : r.inputs) {
     // The material's parameters are listed by `feedflow materials NAME`; show its name only.
     if (in.key.rfind("material.", 0) == 0 && in.key != "material.name") continue;
-    row(out, label_of(in.key == "material.name" ? "material" : in.key), in.display);
+    row(out, quantity_label(in.key == "material.name" ? "material" : in.key), in.display);
   }
 
   out << "\nResults\n";
   if (r.results.empty()) out << "  none\n";
   for (const auto& [name, e] : r.results)
-    row(out, label_of(name), value_text(e), e.model + ", " + to_string(e.rung));
+    row(out, quantity_label(name), value_text(e), e.model + ", " + to_string(e.rung));
 
   out << "\nVerdict: " << upper(to_string(r.verdict.status)) << '\n';
   for (const auto& reason : r.verdict.reasons) out << "  - " << reason << '\n';

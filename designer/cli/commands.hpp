@@ -10,7 +10,8 @@ void add_design_command(CLI::App& app, int& exit_code);
 void add_materials_command(CLI::App& app, int& exit_code);
 void add_cases_command(CLI::App& app, int& exit_code);
 void add_version_command(CLI::App& app, int& exit_code);
-// simulate, sweep, report, bench: reserved names that say "not yet available".
+void add_report_command(CLI::App& app, int& exit_code);
+// simulate, sweep, bench: reserved names that say "not yet available".
 void add_reserved_commands(CLI::App& app, int& exit_code);
 
 }  // namespace feedflow

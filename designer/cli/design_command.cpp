@@ -7,6 +7,8 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
+#include "designer/cli/invocation.hpp"
+#include "designer/cli/report_files.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/design/design_check.hpp"
 #include "reports/results_json.hpp"
@@ -18,6 +20,7 @@ namespace {
 struct DesignArguments {
   std::string case_file;
   CommandOptions options;
+  bool report = false;
 };
 
 int run_design(const DesignArguments& args) {
@@ -32,6 +35,7 @@ int run_design(const DesignArguments& args) {
     std::cerr << "feedflow: material " << c.material.name << " from " << c.material.origin << '\n';
 
   DesignRecord record = design_check(c);
+  record.command_line = invocation();
   record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -40,7 +44,9 @@ int run_design(const DesignArguments& args) {
                                : std::filesystem::path(args.options.out);
   const std::string summary = text_summary(record);
   const std::string json = to_json(record).dump(2) + "\n";
-  const auto written = write_run_outputs(folder, json, summary, args.options);
+  auto written = write_run_outputs(folder, json, summary, args.options);
+  if (args.report)
+    for (auto& file : write_report_files(folder, record)) written.push_back(std::move(file));
 
   if (args.options.human_output()) {
     std::cout << summary << "\nWritten: ";
@@ -61,6 +67,7 @@ void add_design_command(CLI::App& app, int& exit_code) {
       ->required()
       ->type_name("CASE");
   add_case_options(*command, args->options);
+  command->add_flag("--report", args->report, "also write report.pdf and report.html");
   command->callback([args, &exit_code] { exit_code = run_design(*args); });
 }
 

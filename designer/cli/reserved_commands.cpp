@@ -14,7 +14,6 @@ struct Reserved {
 constexpr Reserved kReserved[] = {
     {"simulate", "verify a case with a full simulation (DEM or CEL-FEM)"},
     {"sweep", "run a what-if sweep over case values"},
-    {"report", "turn a results JSON or a run into a PDF and HTML design report"},
     {"bench", "benchmark run time against error for the solvers"},
 };
 

@@ -91,7 +91,7 @@ TEST_F(FeedflowCli, BadCaseExitsTwoAndWritesNothing) {
 
 // Reserved commands say "not yet available" and exit 3, whatever their arguments.
 TEST_F(FeedflowCli, ReservedCommandsExitThree) {
-  for (const auto* cmd : {"simulate cases/pilot_hopper.toml --solver dem", "sweep x", "report r.json", "bench"}) {
+  for (const auto* cmd : {"simulate cases/pilot_hopper.toml --solver dem", "sweep x", "bench"}) {
     SCOPED_TRACE(cmd);
     const auto r = run_feedflow(cmd, dir_);
     EXPECT_EQ(r.exit_code, 3);
@@ -134,6 +134,25 @@ TEST_F(FeedflowCli, HelpAndVersion) {
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
   }
   EXPECT_NE(run_feedflow("version", dir_).out.find("feedflow 0."), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// design --report writes a PDF and HTML; report regenerates them from results.json alone.
+TEST_F(FeedflowCli, DesignReportAndReportCommand) {
+  const auto r = run_feedflow("design cases/pilot_hopper.toml --report -q", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir_ / "out/pilot_hopper/report.pdf"));
+  ASSERT_TRUE(fs::exists(dir_ / "out/pilot_hopper/report.html"));
+  const auto again = run_feedflow("report out/pilot_hopper/results.json --out again", dir_);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(fs::exists(dir_ / "again/report.pdf"));
+  std::ofstream(dir_ / "bad.json") << "{\"feedflow\": 1";
+  EXPECT_EQ(run_feedflow("report bad.json", dir_).exit_code, 2);
+  std::ofstream(dir_ / "run.h5") << "x";
+  EXPECT_EQ(run_feedflow("report run.h5", dir_).exit_code, 3);
 }
 
 }  // namespace
