@@ -12,6 +12,10 @@ json value_json(const std::variant<double, std::string>& v) {
   return std::visit([](const auto& x) { return json(x); }, v);
 }
 
+json value_json(const std::variant<double, std::string, std::vector<double>>& v) {
+  return std::visit([](const auto& x) { return json(x); }, v);
+}
+
 std::variant<double, std::string> value_from(const json& j, const std::string& where) {
   if (j.is_number()) return j.get<double>();
   if (j.is_string()) return j.get<std::string>();
@@ -47,7 +51,10 @@ void collect_nested(const json& node, const std::string& prefix, const json& uni
     }
     InputValue in;
     in.key = dotted;
-    in.value = value_from(value, "inputs." + dotted);
+    if (value.is_array())
+      in.value = value.get<std::vector<double>>();
+    else
+      std::visit([&](auto v) { in.value = std::move(v); }, value_from(value, "inputs." + dotted));
     if (units.contains(dotted)) in.si_unit = units.at(dotted).get<std::string>();
     in.display = value.is_string() ? value.get<std::string>() : value.dump();
     if (!in.si_unit.empty()) in.display += " " + in.si_unit;

@@ -5,7 +5,9 @@
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kTopKeys[] = {"name", "description", "bulk", "psd", "hypoplastic", "dem"};
+constexpr std::string_view kTopKeys[] = {"name",  "description",     "bulk",         "psd",
+                                         "hypoplastic", "flow_properties", "surface_flow",
+                                         "drum_flow",   "dem"};
 constexpr std::string_view kDemKeys[] = {"particle", "particle_particle", "particle_wall"};
 
 const toml::table* subtable(const toml::table& parent, std::string_view key,
@@ -42,6 +44,9 @@ class MaterialLayer {
 
     optional_section("psd", table, root, material_.psd, psd_fields());
     optional_section("hypoplastic", table, root, material_.hypoplastic, hypoplastic_fields());
+    optional_section("flow_properties", table, root, material_.flow, flow_property_fields());
+    optional_section("surface_flow", table, root, material_.surface_flow, surface_flow_fields());
+    optional_section("drum_flow", table, root, material_.drum_flow, drum_flow_fields());
 
     if (const auto* dem = subtable(table, "dem", root)) {
       const bool complete = !material_.dem.has_value() || !overriding_;

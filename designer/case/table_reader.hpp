@@ -83,6 +83,22 @@ void read_fields(const toml::table& table, std::span<const FieldSpec<Record>> fi
       record.*(f.label) = std::move(text);
       continue;
     }
+    if (f.number_list) {
+      const auto* array = value.as_array();
+      if (!array)
+        throw InputError(location(value, ctx.file), key,
+                         "expected a list of values, e.g. [\"0.1 kPa\", \"1 kPa\"]");
+      std::vector<double> list;
+      for (const auto& item : *array) {
+        list.push_back(read_quantity(item, f.dimension, key, ctx));
+        if (!f.range.contains(list.back()))
+          throw InputError(location(item, ctx.file), key,
+                           "out of range: " + f.range.describe(f.display_unit) + ", got " +
+                               format_for_error(list.back(), f.display_unit));
+      }
+      record.*(f.number_list) = std::move(list);
+      continue;
+    }
     const double si = read_quantity(value, f.dimension, key, ctx);
     if (!f.range.contains(si))
       throw InputError(location(value, ctx.file), key,

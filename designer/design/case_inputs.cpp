@@ -17,7 +17,17 @@ void append(std::vector<DescribedInput>& out, const std::string& prefix,
     const std::string key = prefix + "." + std::string(f.key);
     if (f.is_label()) {
       const std::string& label = record.*(f.label);
-      out.push_back({{key, label, "", label}, f.description});
+      out.push_back({{key, label, "", label, ""}, f.description});
+      continue;
+    }
+    if (f.number_list) {
+      const auto& list = record.*(f.number_list);
+      if (list.empty()) continue;
+      std::string display;
+      for (double v : list)
+        display += (display.empty() ? "" : ", ") + format_number(convert_to(v, f.display_unit));
+      out.push_back({{key, list, si_unit(f.dimension), display + " " + std::string(f.display_unit), ""},
+                     f.description});
       continue;
     }
     double si = 0.0;
@@ -28,7 +38,7 @@ void append(std::vector<DescribedInput>& out, const std::string& prefix,
       if (!optional) continue;
       si = *optional;
     }
-    out.push_back({{key, si, si_unit(f.dimension), format_quantity(si, f.display_unit)},
+    out.push_back({{key, si, si_unit(f.dimension), format_quantity(si, f.display_unit), ""},
                    f.description});
   }
 }
@@ -38,6 +48,9 @@ std::vector<DescribedInput> described_material(const Material& m) {
   append(out, "bulk", bulk_fields(), m.bulk);
   if (m.psd) append(out, "psd", psd_fields(), *m.psd);
   if (m.hypoplastic) append(out, "hypoplastic", hypoplastic_fields(), *m.hypoplastic);
+  if (m.flow) append(out, "flow_properties", flow_property_fields(), *m.flow);
+  if (m.surface_flow) append(out, "surface_flow", surface_flow_fields(), *m.surface_flow);
+  if (m.drum_flow) append(out, "drum_flow", drum_flow_fields(), *m.drum_flow);
   if (m.dem) {
     append(out, "dem.particle", dem_particle_fields(), m.dem->particle);
     append(out, "dem.particle_particle", dem_contact_fields(), m.dem->particle_particle);

@@ -19,7 +19,7 @@ EquipmentKind equipment_kind_from_string(const std::string& text);  // throws st
 // One resolved input: dotted key, SI value (or text), SI unit, and how a person reads it.
 struct InputValue {
   std::string key;                          // "hopper.semi_angle"
-  std::variant<double, std::string> value;  // SI number, or a label ("wedge")
+  std::variant<double, std::string, std::vector<double>> value;  // SI number(s) or a label
   std::string si_unit;                      // "rad"; empty for labels and pure numbers
   std::string display;                      // "30 deg"
   std::string source;                       // where the value comes from (materials); may be empty

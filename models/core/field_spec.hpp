@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "models/units/dimension.hpp"
 
@@ -50,6 +51,9 @@ struct FieldSpec {
   double Record::*number = nullptr;
   std::optional<double> Record::*optional_number = nullptr;
 
+  // List fields: several numbers of one dimension (a measured table).
+  std::vector<double> Record::*number_list = nullptr;
+
   // Label fields: the allowed words and the member.
   std::span<const std::string_view> choices{};
   std::string Record::*label = nullptr;
@@ -88,6 +92,22 @@ constexpr FieldSpec<Record> optional_number_field(std::string_view key,
   f.display_unit = display_unit;
   f.range = range;
   f.optional_number = member;
+  return f;
+}
+
+template <class Record>
+constexpr FieldSpec<Record> number_list_field(std::string_view key,
+                                              std::vector<double> Record::*member,
+                                              Dimension dimension, std::string_view display_unit,
+                                              Range range, std::string_view description) {
+  FieldSpec<Record> f;
+  f.key = key;
+  f.description = description;
+  f.presence = Presence::optional;
+  f.dimension = dimension;
+  f.display_unit = display_unit;
+  f.range = range;
+  f.number_list = member;
   return f;
 }
 

@@ -10,6 +10,7 @@
 
 #include "models/core/field_spec.hpp"
 #include "models/material/dem_parameters.hpp"
+#include "models/material/flow_properties.hpp"
 #include "models/material/hypoplastic_parameters.hpp"
 
 namespace feedflow {
@@ -35,6 +36,9 @@ struct Material {
   std::optional<ParticleSizeDistribution> psd;
   std::optional<HypoplasticParameters> hypoplastic;
   std::optional<DemParameters> dem;
+  std::optional<FlowProperties> flow;              // [flow_properties]
+  std::optional<SurfaceFlowProperties> surface_flow;  // [surface_flow]
+  std::optional<DrumFlowProperties> drum_flow;     // [drum_flow]
   std::map<std::string, std::string> sources;  // dotted key ("bulk.density") -> source
 };
 
