@@ -42,7 +42,7 @@ double brent_root(const std::function<double(double)>& f, double lo, double hi, 
 }
 
 double adaptive_integral(const std::function<double(double)>& f, double a, double b,
-                         double rel_tol, const std::string& what) {
+                         double abs_tol, double rel_tol, const std::string& what) {
   const GslErrorsAsStatus quiet;
   constexpr std::size_t kIntervals = 1000;
   std::unique_ptr<gsl_integration_workspace, decltype(&gsl_integration_workspace_free)> ws(
@@ -50,7 +50,7 @@ double adaptive_integral(const std::function<double(double)>& f, double a, doubl
   gsl_function fn{call, const_cast<std::function<double(double)>*>(&f)};
   double result = 0.0, error = 0.0;
   const int status =
-      gsl_integration_qags(&fn, a, b, 0.0, rel_tol, kIntervals, ws.get(), &result, &error);
+      gsl_integration_qags(&fn, a, b, abs_tol, rel_tol, kIntervals, ws.get(), &result, &error);
   if (status != GSL_SUCCESS || !std::isfinite(result))
     throw NumericalFailure(what + ": quadrature failed (" + gsl_strerror(status) +
                            ", estimated error " + std::to_string(error) + ")");

@@ -11,9 +11,10 @@ namespace feedflow {
 double brent_root(const std::function<double(double)>& f, double lo, double hi, double xtol_abs,
                   double xtol_rel, const std::string& what);
 
-// Integral of f over [a, b] by GSL's QAGS (adaptive, tolerates integrable end singularities).
+// Integral of f over [a, b] by GSL's QAGS (adaptive, tolerates integrable end singularities),
+// to abs_tol or rel_tol, whichever is looser (an integral near zero needs abs_tol).
 double adaptive_integral(const std::function<double(double)>& f, double a, double b,
-                         double rel_tol, const std::string& what);
+                         double abs_tol, double rel_tol, const std::string& what);
 
 // While alive, GSL errors are returned as status codes instead of aborting the program.
 class GslErrorsAsStatus {
