@@ -147,6 +147,15 @@ std::optional<RadialStressField> solve_radial_stress_field(FlowGeometry g, doubl
   const double log_s0 = brent_root([&](double x) { return mismatch_of_log_s0(x, &data); }, lo,
                                    hi, 1e-12, 0.0, where);
   const WallState wall = integrate_to_wall(g, theta_w, delta, phi_w, std::exp(log_s0));
+  if (!wall.reached_wall || std::abs(wall.mismatch) > 1e-6) {
+    // F changes sign across a guard (a path stopped at the singular line or fallen away on
+    // one side) instead of through psi(theta_w) = psi_w: no admissible field in the bracket.
+    // Met for delta = 25 deg cones beyond the conical limit.
+    const double step = 1e-9;
+    const WallState below = integrate_to_wall(g, theta_w, delta, phi_w, std::exp(log_s0 - step));
+    const WallState above = integrate_to_wall(g, theta_w, delta, phi_w, std::exp(log_s0 + step));
+    if (!below.reached_wall || !above.reached_wall) return std::nullopt;
+  }
   if (!wall.reached_wall || std::abs(wall.mismatch) > 1e-6)
     throw NumericalFailure(where + ": the shooting converged on a jump of F(s0), not a root "
                                    "(mismatch " + std::to_string(wall.mismatch) + " rad)");

@@ -25,8 +25,11 @@ double radial_field_wall_mismatch(FlowGeometry g, double semi_angle,
                                   double axis_stress);
 
 // The admissible field, or nothing when none exists for s0 in [1e-3, 1/((3+2m) sin delta - 1)]
-// (F(s0_min) <= 0: conical funnel flow, the existence limit). Throws NumericalFailure when the
-// integration or root finding fails, std::invalid_argument for angles out of range.
+// (F(s0_min) <= 0: conical funnel flow, the existence limit; or F changes sign only across a
+// path stopped by a guard, never through psi(theta_w) = psi_w, seen for delta = 25 deg cones
+// beyond the limit; and always for phi_w = delta, where psi_w lies on the singular line).
+// Throws NumericalFailure when the integration or root finding fails, std::invalid_argument
+// for angles out of range.
 std::optional<RadialStressField> solve_radial_stress_field(FlowGeometry g, double semi_angle,
                                                            double effective_friction_angle,
                                                            double wall_friction_angle);

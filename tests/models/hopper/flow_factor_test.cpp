@@ -126,6 +126,39 @@ TEST(HopperFlowFactor, PlaneMismatchFallsWithAxisStress) {
   }
 }
 
+// The passive field of section 1.3: it starts at the transition value, satisfies the slice
+// equation d sigma1/dr = X sigma1/r - (X-1) rho g k (central differences) and turns radial,
+// sigma1/(rho g r) -> (1 + sin delta) Y/(X-1), towards the outlet.
+TEST(HopperFlowFactor, EnstadPassiveStressField) {
+  const auto g = FlowGeometry::plane;
+  const double t = 30 * kDeg, d = 50 * kDeg, w = 8.5 * kDeg, rho = 290, rg = rho * 9.81;
+  const auto [x, y] = enstad_coefficients(g, t, d, w);
+  const double k = (1 + std::sin(d)) * y / (x - 1);
+  EXPECT_NEAR(enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, 0.6), 900.0, 1e-9);
+  for (double r : {0.1, 0.3, 0.5}) {
+    const double h = 1e-6;
+    const double slope = (enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, r + h) -
+                          enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, r - h)) / (2 * h);
+    EXPECT_NEAR(slope, x * enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, r) / r -
+                           (x - 1) * rg * k, 1e-3);
+  }
+  EXPECT_NEAR(enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, 1e-4) / (rg * 1e-4), k, 1e-3);
+  const auto profile = enstad_passive_stress_profile(g, t, d, w, rho, 0.06, 0.6, 900.0, 10);
+  ASSERT_EQ(profile.size(), 10u);
+  EXPECT_NEAR(profile.front().radius, 0.06, 1e-12);
+  EXPECT_NEAR(profile.back().major_stress, 900.0, 1e-9);
+}
+
+// Beyond the conical limit of a low-friction solid (delta 25, phi_w 20 deg: limit 29.5 deg)
+// F(s0) jumps from the singular-line guard to negative values without a root: no field, not a
+// spurious root and not an exception.
+TEST(HopperFlowFactor, NoFieldAcrossAGuardJump) {
+  EXPECT_FALSE(
+      solve_radial_stress_field(FlowGeometry::conical, 50 * kDeg, 25 * kDeg, 20 * kDeg).has_value());
+  EXPECT_TRUE(
+      solve_radial_stress_field(FlowGeometry::conical, 25 * kDeg, 25 * kDeg, 20 * kDeg).has_value());
+}
+
 // A wall rougher than the solid and a semi-angle of 90 deg are refused, not computed.
 TEST(HopperFlowFactor, RejectsImpossibleAngles) {
   EXPECT_THROW(enstad_flow_factor(FlowGeometry::plane, 30 * kDeg, 40 * kDeg, 45 * kDeg),
