@@ -3,10 +3,10 @@
 // m = 0) or conical (m = 1) flow, the wall stress angle beta and Jenike's arch function H.
 // SI units, angles in radians.
 #include "models/equipment/hopper.hpp"
+#include "models/core/gravity.hpp"
 
 namespace feedflow {
 
-inline constexpr double kGravity = 9.81;  // [m/s^2], as in reduced_models.md
 
 enum class FlowGeometry { plane, conical };
 
