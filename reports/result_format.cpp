@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "models/units/quantity_format.hpp"
+#include "models/units/quantity_parser.hpp"
 
 namespace feedflow {
 
@@ -12,15 +13,29 @@ std::string quantity_label(const std::string& name) {
   return s;
 }
 
+namespace {
+// The value in the unit people read: display_unit when it converts from unit.
+std::string in_display_unit(const Estimate& e, double v, bool with_unit) {
+  std::string unit = e.unit;
+  if (!e.display_unit.empty() && e.display_unit != e.unit) {
+    try {
+      v = convert_to(v * parse_unit(e.unit).si, e.display_unit);
+      unit = e.display_unit;
+    } catch (const UnitError&) {  // not convertible: keep the stored unit
+    }
+  }
+  return format_number(v) + (with_unit && !unit.empty() && unit != "-" ? " " + unit : "");
+}
+}  // namespace
+
 std::string estimate_value_text(const Estimate& e) {
   if (!e.is_number()) return std::get<std::string>(e.value);
-  return format_number(std::get<double>(e.value)) + (e.unit.empty() ? "" : " " + e.unit);
+  return in_display_unit(e, std::get<double>(e.value), true);
 }
 
 std::string estimate_band_text(const Estimate& e) {
   if (!e.low || !e.high) return "";
-  return format_number(*e.low) + " .. " + format_number(*e.high) +
-         (e.unit.empty() ? "" : " " + e.unit);
+  return in_display_unit(e, *e.low, false) + " .. " + in_display_unit(e, *e.high, true);
 }
 
 }  // namespace feedflow

@@ -131,6 +131,7 @@ json to_json(const DesignRecord& r) {
               {"unit", e.unit},
               {"model", e.model},
               {"rung", to_string(e.rung)}};
+    if (!e.display_unit.empty()) q["display_unit"] = e.display_unit;
     q["low"] = e.low ? json(*e.low) : json(nullptr);
     q["high"] = e.high ? json(*e.high) : json(nullptr);
     results[name] = std::move(q);
@@ -165,6 +166,7 @@ DesignRecord design_record_from_json(const json& j) {
       if (q.contains("high") && !q.at("high").is_null()) e.high = q.at("high").get<double>();
       e.model = field(q, "model", where).get<std::string>();
       e.rung = rung_from_string(field(q, "rung", where).get<std::string>());
+      e.display_unit = q.value("display_unit", "");
       r.results.emplace_back(name, std::move(e));
     }
     const json& v = field(j, "verdict", "results");

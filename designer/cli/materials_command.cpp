@@ -59,7 +59,7 @@ void show_material(const MaterialLibrary& library, const std::string& name,
       section = this_section;
       std::cout << "\n[" << section << "]\n";
     }
-    std::printf("  %-20s %-16s %s\n  %-20s %-16s source: %s\n",
+    std::printf("  %-32s %-16s %s\n  %-32s %-16s source: %s\n",
                 row.value.key.substr(dot + 1).c_str(), row.value.display.c_str(),
                 row.description.c_str(), "", "", row.value.source.c_str());
   }

@@ -58,7 +58,7 @@ std::vector<DescribedInput> described_material(const Material& m) {
   }
   for (auto& d : out) {
     const auto source = m.sources.find(d.value.key);
-    d.value.source = source != m.sources.end() ? source->second : "unknown";
+    d.value.source = source != m.sources.end() ? source->second : "feedflow default (not in the material file)";
   }
   return out;
 }

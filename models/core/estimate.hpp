@@ -19,6 +19,7 @@ struct Estimate {
   std::optional<double> high;               // upper end of the uncertainty band
   std::string model;                        // e.g. "Jenike/Enstad closed form"
   Rung rung = Rung::L0;
+  std::string display_unit;                 // unit people read it in ("mm"); empty = `unit`
 
   bool is_number() const { return std::holds_alternative<double>(value); }
 };

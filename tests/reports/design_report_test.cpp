@@ -55,7 +55,7 @@ DesignRecord record() {
   r.inputs = {{"hopper.semi_angle", 0.5236, "rad", "30 deg", ""},
               {"material.name", std::string("loblolly_pine"), "", "loblolly_pine", "built-in"},
               {"material.bulk.density", 290.0, "kg/m^3", "290 kg/m^3", "seed FEM deck"}};
-  r.results = {{"critical_outlet_width", {23.6, "mm", 18.0, 31.0, "Jenike/Enstad closed form", Rung::L0}}};
+  r.results = {{"critical_outlet_width", {23.6, "mm", 18.0, 31.0, "Jenike/Enstad closed form", Rung::L0, ""}}};
   r.verdict = {VerdictStatus::pass, {"outlet 60 mm is 2.5 x the critical width 23.6 mm"}};
   Chart c;
   c.id = "bc";

@@ -17,8 +17,8 @@ DesignRecord sample() {
   r.inputs = {{"hopper.semi_angle", 0.5235987755982988, "rad", "30 deg", ""},
               {"hopper.shape", std::string("wedge"), "", "wedge", ""},
               {"material.bulk.density", 290.0, "kg/m^3", "290 kg/m^3", "seed FEM deck"}};
-  r.results = {{"critical_outlet_width", {0.0236, "m", 0.018, 0.031, "Jenike/Enstad", Rung::L0}},
-               {"flow_pattern", {std::string("mass"), "", std::nullopt, std::nullopt, "Arnold-McLean", Rung::L0}}};
+  r.results = {{"critical_outlet_width", {0.0236, "m", 0.018, 0.031, "Jenike/Enstad", Rung::L0, ""}},
+               {"flow_pattern", {std::string("mass"), "", std::nullopt, std::nullopt, "Arnold-McLean", Rung::L0, ""}}};
   r.verdict = {VerdictStatus::pass, {"outlet 60 mm >= 1.2 x 23.6 mm"}};
   r.wall_seconds = 0.0012;
   return r;
