@@ -1,6 +1,7 @@
 #include "reports/text_summary.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include "models/units/quantity_format.hpp"
@@ -14,10 +15,6 @@ std::string upper(std::string s) {
   return s;
 }
 
-std::string value_text(const Estimate& e) {
-  const std::string band = estimate_band_text(e);
-  return estimate_value_text(e) + (band.empty() ? "" : "  [" + band + "]");
-}
 
 void row(std::ostringstream& out, const std::string& label, const std::string& value,
          const std::string& note = "") {
@@ -46,9 +43,18 @@ std::string text_summary(const DesignRecord& r) {
 
   out << "\nResults\n";
   if (r.results.empty()) out << "  none\n";
-  for (const auto& [name, e] : r.results)
-    row(out, quantity_label(name), value_text(e), e.model + ", " + to_string(e.rung));
-
+  if (!r.results.empty()) {
+    char line[512];
+    std::snprintf(line, sizeof line, "  %-34s %-22s %-26s %-4s %s\n", "quantity", "value", "band", "rung", "model");
+    out << line;
+    for (const auto& [name, e] : r.results) {
+      const std::string band = estimate_band_text(e);
+      std::snprintf(line, sizeof line, "  %-34s %-22s %-26s %-4s %s\n", quantity_label(name).c_str(),
+                    estimate_value_text(e).c_str(), band.empty() ? "-" : band.c_str(), to_string(e.rung),
+                    e.model.c_str());
+      out << line;
+    }
+  }
   out << "\nVerdict: " << upper(to_string(r.verdict.status)) << '\n';
   for (const auto& reason : r.verdict.reasons) out << "  - " << reason << '\n';
   out << "\nWall time: "

@@ -21,6 +21,7 @@ struct DesignArguments {
   std::string case_file;
   CommandOptions options;
   bool report = false;
+  std::vector<std::string> models;  // --model key=name
 };
 
 int run_design(const DesignArguments& args) {
@@ -28,13 +29,14 @@ int run_design(const DesignArguments& args) {
   std::vector<SetOverride> overrides;
   for (const auto& s : args.options.sets) overrides.push_back(parse_set_override(s));
 
+  const ModelChoices models = ModelChoices::parse(args.models);
   const Case c = load_case(args.case_file, overrides);
   if (!args.options.quiet)
     for (const auto& w : c.warnings) std::cerr << "feedflow: warning: " << w << '\n';
   if (args.options.verbose)
     std::cerr << "feedflow: material " << c.material.name << " from " << c.material.origin << '\n';
 
-  DesignRecord record = design_check(c);
+  DesignRecord record = design_check(c, models);
   record.command_line = invocation();
   record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -68,6 +70,17 @@ void add_design_command(CLI::App& app, int& exit_code) {
       ->type_name("CASE");
   add_case_options(*command, args->options);
   command->add_flag("--report", args->report, "also write report.pdf and report.html");
+  std::string model_help = "select an alternative model (repeatable):";
+  for (const auto& o : model_options()) {
+    model_help += "\n  " + std::string(o.key) + "=";
+    for (std::size_t i = 0; i < o.choices.size(); ++i)
+      model_help += (i ? "|" : "") + std::string(o.choices[i]);
+    model_help += " (default " + std::string(o.default_choice) + ")";
+  }
+  command->add_option("--model", args->models, model_help)
+      ->type_name("KEY=NAME")
+      ->take_all()
+      ->allow_extra_args(false);
   command->callback([args, &exit_code] { exit_code = run_design(*args); });
 }
 

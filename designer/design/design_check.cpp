@@ -1,11 +1,15 @@
 #include "designer/design/design_check.hpp"
 
 #include "designer/design/case_inputs.hpp"
+#include "designer/design/chute_check.hpp"
+#include "designer/design/drum_check.hpp"
+#include "designer/design/hopper_check.hpp"
+#include "designer/design/verdict_builder.hpp"
 #include "models/core/version.hpp"
 
 namespace feedflow {
 
-DesignRecord design_check(const Case& c) {
+DesignRecord design_check(const Case& c, const ModelChoices& models) {
   DesignRecord record;
   record.feedflow_version = kVersion;
   record.case_name = c.name;
@@ -13,11 +17,17 @@ DesignRecord design_check(const Case& c) {
   record.case_file = c.file;
   record.description = c.description;
   record.inputs = case_inputs(c);
-  // No reduced model is wired in yet: nothing is computed, and the verdict says so rather than
-  // showing placeholder numbers.
-  record.verdict.status = VerdictStatus::unknown;
-  record.verdict.reasons.push_back(std::string("no reduced model for a ") + to_string(c.kind()) +
-                                   " is available in this build yet, so nothing was computed");
+  VerdictBuilder verdict;
+  std::visit(
+      [&](const auto& equipment) {
+        using T = std::decay_t<decltype(equipment)>;
+        if constexpr (std::is_same_v<T, Hopper>) check_hopper(c, equipment, models, record, verdict);
+        if constexpr (std::is_same_v<T, Chute>) check_chute(c, equipment, models, record, verdict);
+        if constexpr (std::is_same_v<T, Drum>) check_drum(c, equipment, record, verdict);
+      },
+      c.equipment);
+  record.verdict = verdict.verdict();
+  if (!verdict.judged()) record.verdict.status = VerdictStatus::unknown;
   return record;
 }
 

@@ -1,0 +1,139 @@
+#include "designer/design/hopper_charts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "models/hopper/bin_stresses.hpp"
+#include "models/hopper/hopper_slice_stresses.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::vector<double> range(double from, double to, int points) {
+  std::vector<double> v;
+  for (int i = 0; i < points; ++i) v.push_back(from + (to - from) * i / (points - 1));
+  return v;
+}
+
+Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
+                           const FlowPatternVerdict& pattern) {
+  Chart c{"critical_outlet_width_vs_semi_angle", "Critical outlet width against semi-angle",
+          {"semi-angle", "deg"}, {"critical outlet width", "mm"}, {}, ""};
+  const double top = std::min(60.0 * kDeg, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDeg);
+  const auto angles = range(5.0 * kDeg, top, 23);
+  const auto corners = material_variants(m, *h.wall_friction_angle, true);
+  ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}};
+  ChartSeries jenike{"Jenike H(theta)", SeriesStyle::line, {}, {}, {}};
+  ChartSeries arch{"static arch H_a", SeriesStyle::dashed, {}, {}, {}};
+  for (double theta : angles) {
+    const auto e = evaluate_hopper(h, theta, h.outlet_width, m, material_variants(m, *h.wall_friction_angle).front(), models);
+    double lo = e.critical_width, hi = e.critical_width;
+    for (const auto& v : corners) {
+      const double w = evaluate_hopper(h, theta, h.outlet_width, m, v, models).critical_width;
+      lo = std::min(lo, w);
+      hi = std::max(hi, w);
+    }
+    const double x = theta / kDeg;
+    band.x.push_back(x);
+    band.y.push_back(lo * 1e3);
+    band.y_upper.push_back(hi * 1e3);
+    jenike.x.push_back(x);
+    jenike.y.push_back(std::isfinite(e.jenike.width) ? e.jenike.width * 1e3 : NAN);
+    if (e.static_arch) {
+      arch.x.push_back(x);
+      arch.y.push_back(std::isfinite(e.static_arch->width) ? e.static_arch->width * 1e3 : NAN);
+    }
+  }
+  c.series = {band, jenike};
+  if (!arch.x.empty()) c.series.push_back(arch);
+  c.series.push_back({"mass-flow limit", SeriesStyle::dashed,
+                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg},
+                      {0.0, *std::max_element(band.y_upper.begin(), band.y_upper.end())}, {}});
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}});
+  c.note = "The band spans the material's uncertainty (delta, wall friction, flow function). The design "
+           "outlet must sit above the band with the safety factor; Jenike errs wide (safe side).";
+  return c;
+}
+
+Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperEvaluation& nominal) {
+  const bool wedge = h.is_wedge();
+  const double length = wedge ? *h.slot_length : 1.0;
+  Chart c{"mass_flow_rate_vs_outlet_width", "Discharge rate against outlet width", {"outlet width", "mm"},
+          {wedge ? "mass flow rate (slot)" : "mass flow rate", "kg/s"}, {}, ""};
+  const double from = std::max(nominal.critical_width, 1e-3), to = std::max(2.5 * h.outlet_width, 2 * from);
+  const auto widths = range(from, to, 25);
+  const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
+  for (const char* model : {"johanson", "beverloo", "brown"}) {
+    if (!wedge && std::string(model) == "brown") continue;
+    std::vector<std::string> setting{std::string("hopper.discharge=") + model};
+    const auto choice = ModelChoices::parse(setting);
+    ChartSeries s{model == std::string("johanson") ? "Johanson (cohesive)"
+                  : model == std::string("beverloo") ? "Beverloo"
+                                                     : "Brown-Richards",
+                  model == std::string("johanson") ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
+    for (double w : widths) {
+      s.x.push_back(w * 1e3);
+      s.y.push_back(evaluate_hopper(h, h.semi_angle, w, m, nominal_variant, choice).rate * length);
+    }
+    c.series.push_back(std::move(s));
+  }
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.outlet_width * 1e3}, {nominal.rate * length}, {}});
+  c.note = "Johanson goes to zero at the critical outlet width; the spread between the correlations is part of "
+           "the rate's band.";
+  return c;
+}
+
+Chart pattern_chart(const Hopper& h, const HopperMaterial& m, const FlowPatternVerdict& pattern) {
+  const FlowGeometry g = flow_geometry(h);
+  Chart c{"flow_pattern_chart", "Mass-flow limit against wall friction", {"wall friction angle", "deg"},
+          {"hopper semi-angle", "deg"}, {}, ""};
+  const double delta = m.flow.effective_friction_angle;
+  ChartSeries band{"limit band", SeriesStyle::band, {}, {}, {}};
+  ChartSeries line{"mass-flow limit", SeriesStyle::line, {}, {}, {}};
+  for (double phi : range(0.0, std::min(delta - 1.0 * kDeg, 45.0 * kDeg), 30)) {
+    const auto limit = mass_flow_limit(g, delta, phi);
+    band.x.push_back(phi / kDeg);
+    band.y.push_back(limit.low / kDeg);
+    band.y_upper.push_back(limit.high / kDeg);
+    line.x.push_back(phi / kDeg);
+    line.y.push_back(limit.nominal / kDeg);
+  }
+  c.series = {band, line,
+              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDeg}, {h.semi_angle / kDeg}, {}}};
+  c.note = "Below the line: mass flow; above it: funnel flow. " + pattern.limit.model + ".";
+  return c;
+}
+
+Chart stress_chart(const Hopper& h, const HopperMaterial& m, const double design_density) {
+  Chart c{"stresses_while_emptying", "Stresses while emptying (Janssen bin, hopper slice)", {"stress", "kPa"},
+          {"height above the apex", "m"}, {}, ""};
+  const auto profile = emptying_silo_profile(h, design_density, m.flow.effective_friction_angle,
+                                             *h.wall_friction_angle, StressRatioRule::schulze);
+  ChartSeries vertical{"mean vertical stress", SeriesStyle::line, {}, {}, {}};
+  ChartSeries normal{"wall normal stress", SeriesStyle::dashed, {}, {}, {}};
+  for (const auto& p : profile) {
+    vertical.x.push_back(p.vertical / 1e3);
+    vertical.y.push_back(p.height);
+    normal.x.push_back(p.wall_normal / 1e3);
+    normal.y.push_back(p.height);
+  }
+  c.series = {vertical, normal};
+  c.note = "Emptying state with a constant bulk density; the wall normal stress jumps at the transition (switch "
+           "stress). Structural loads need EN 1991-4, which this chart does not replace.";
+  return c;
+}
+
+}  // namespace
+
+std::vector<Chart> hopper_charts(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
+                                 const HopperEvaluation& nominal, const FlowPatternVerdict& pattern) {
+  std::vector<Chart> charts{outlet_against_angle(h, m, models, pattern), rate_against_outlet(h, m, nominal),
+                            pattern_chart(h, m, pattern)};
+  charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
+  return charts;
+}
+
+}  // namespace feedflow
