@@ -16,7 +16,8 @@ inline Eigen::Matrix3d hughes_winget_rotation(const Eigen::Matrix3d& spin, doubl
 inline void rotate_objectively(Eigen::Matrix3d& stress, const Eigen::Matrix3d& spin, double dt) {
   if (spin.isZero(0.0)) return;
   const Eigen::Matrix3d q = hughes_winget_rotation(spin, dt);
-  stress = q * stress * q.transpose();
+  const Eigen::Matrix3d rotated = q * stress * q.transpose();
+  stress = 0.5 * (rotated + rotated.transpose());  // keep it exactly symmetric
 }
 
 }  // namespace feedflow

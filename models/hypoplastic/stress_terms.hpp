@@ -20,8 +20,8 @@ inline NormalizedStress normalized_stress(const Tensor3& stress, double trace) {
   s.that = stress / trace;
   s.deviator = s.that;
   s.deviator.diagonal().array() -= 1.0 / 3.0;
+  s.j2 = s.deviator.cwiseAbs2().sum();  // Ts:Ts >= 0 even for a slightly unsymmetric input
   const Tensor3 ts2 = s.deviator * s.deviator;
-  s.j2 = ts2.trace();
   if (s.j2 <= 1e-10) {
     s.cos3theta = 1.0;
   } else {
