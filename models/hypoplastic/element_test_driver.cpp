@@ -58,8 +58,13 @@ int right_hand_side(sunrealtype, N_Vector y, N_Vector ydot, void* user) {
   if (!(s.void_ratio > 0.0)) return 1;  // recoverable: CVODE retries with a smaller step
   try {
     const ElementRates r = c.solver->solve(s);
+    const ElementControl& control = c.stage->control;
     for (int k = 0; k < 6; ++k) {
-      out[k] = r.stress_rate(kComponentRow[k], kComponentColumn[k]);
+      // Stress-controlled components get their prescribed rate exactly: the solve's residual
+      // noise would otherwise enter CVODE's difference-quotient Jacobian and let them drift.
+      out[k] = control.control[k] == ComponentControl::stress
+                   ? control.rate[k]
+                   : r.stress_rate(kComponentRow[k], kComponentColumn[k]);
       out[7 + k] = r.stretching(kComponentRow[k], kComponentColumn[k]);
     }
     out[6] = void_ratio_rate(s.void_ratio, r.stretching.trace());

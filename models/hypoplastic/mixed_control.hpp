@@ -2,10 +2,12 @@
 // Mixed stress/strain control of a homogeneous element: each of the six tensor components
 // (xx, yy, zz, xy, yz, zx) has either its stretching D_ij or its stress rate dT_ij/dt prescribed;
 // the unknown stretching components are solved from the rate law
-//   dT/dt = T°(T, e, D) + W T - T W   (Jaumann, models.md 1.1)
-// with GSL's hybrid Newton solver and the analytic Jacobian of the rate law.
+//   dT/dt = T°(T, e, D) + W T - T W   (Jaumann, models.md 1.1).
+// T° = L:D + N ||D|| is linear in D for a given s = ||D||, so the unknowns are affine in s,
+// D = a + b s, and s = ||a + b s|| is a quadratic: the solve is exact (Eigen LU for the linear
+// part), without iteration and without jumping between roots. Two admissible roots (|b| > 1,
+// loss of uniqueness) take the smaller s; none throws NumericalFailure.
 #include <array>
-#include <memory>
 
 #include <Eigen/Core>
 
@@ -30,21 +32,21 @@ struct ElementRates {
   Eigen::Matrix3d stress_rate;  // dT/dt including the spin terms [Pa/s]
 };
 
-// Solves for the unknown stretching components. Holds the GSL solver and the last solution (the
-// next solve starts from it). Throws NumericalFailure when the solve does not converge.
+// Solves for the unknown stretching components of one control. Throws NumericalFailure when no
+// stretching satisfies the control (e.g. stress control at zero stress).
 class MixedControlSolver {
  public:
+  // Throws std::invalid_argument when all six components are stress-controlled.
   MixedControlSolver(const HypoplasticModel& model, const ElementControl& control);
-  ~MixedControlSolver();
-  MixedControlSolver(const MixedControlSolver&) = delete;
-  MixedControlSolver& operator=(const MixedControlSolver&) = delete;
 
-  ElementRates solve(const MaterialPointState& state);
-
-  struct Workspace;  // opaque: GSL state and the last solution
+  ElementRates solve(const MaterialPointState& state) const;
 
  private:
-  std::unique_ptr<Workspace> w_;
+  const HypoplasticModel* model_;
+  ElementControl control_;
+  std::array<int, 6> unknown_{};  // stress-controlled components
+  int unknown_count_ = 0;
+  Eigen::Matrix3d known_stretching_ = Eigen::Matrix3d::Zero();
 };
 
 }  // namespace feedflow
