@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   add_materials_command(app, exit_code);
   add_cases_command(app, exit_code);
   add_version_command(app, exit_code);
+  add_element_test_command(app, exit_code);
   add_reserved_commands(app, exit_code);
 
   try {
