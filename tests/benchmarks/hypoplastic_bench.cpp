@@ -30,7 +30,7 @@ void HypoplasticRateEvaluation(benchmark::State& state) {
     benchmark::DoNotOptimize(rate);
   }
 }
-BENCHMARK(HypoplasticRateEvaluation)->Arg(0)->Arg(1)->ArgName("von_wolffersdorff");
+BENCHMARK(HypoplasticRateEvaluation)->Arg(0)->Arg(1)->ArgName("variant");  // 0 G-B, 1 vW
 
 // One CEL step: Hughes-Winget rotation, safeguards, Heun substep(s) with error control.
 void HypoplasticMaterialPointStep(benchmark::State& state) {
