@@ -162,7 +162,7 @@ Snapshot SnapshotRenderer::render(const Scene& scene, const SnapshotOptions& opt
     api.ClearDepth(1.0);
     api.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     api.Enable(GL_DEPTH_TEST);
-    api.DepthFunc(GL_LESS);
+    api.DepthFunc(GL_LEQUAL);  // of two coplanar pieces (a mesh on the field plane), the later wins
     context_->flat.draw(solid, shot.camera);
     context_->spheres.draw(scene.particles, colours, shot.camera);
     // Walls and the free surface stay visible in front of everything.

@@ -195,6 +195,39 @@ TEST(Snapshot, NearerSphereHidesFartherOne) {
       near(pixel_under(shot, centre), expected_centre_pixel(shot, centre, 0.01, viridis(0.0)), 4));
 }
 
+// The axial view of a drum draws its shell as a circle of the drum's radius around the axis:
+// wall colour on the circle, background at the centre and just inside the shell.
+TEST(Snapshot, DrumShellIsACircleInTheAxialView) {
+  Scene scene;
+  scene.cylinders.push_back({{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.25, 0.1});
+  SnapshotOptions options = small_options();
+  options.preset = CameraPreset::axial;
+  options.wall_colour = {200, 0, 0};
+  options.wall_width_pixels = 3.0;
+  const Snapshot shot = shared_renderer().render(scene, options);
+  const Rgba8 background{255, 255, 255, 255};
+  EXPECT_EQ(pixel_under(shot, {0.0, 0.0, 0.05}), background);
+  EXPECT_EQ(pixel_under(shot, {0.0, 0.2, 0.05}), background);
+  for (double angle : {0.0, 0.7, 1.9, 3.1, 4.4}) {
+    const Vec3 on_shell{0.25 * std::cos(angle), 0.25 * std::sin(angle), 0.05};
+    EXPECT_TRUE(near(pixel_under(shot, on_shell), Rgb8{200, 0, 0}, 60)) << "angle " << angle;
+  }
+}
+
+// A wall segment is drawn in the wall colour along its length, in front of particles.
+TEST(Snapshot, WallSegmentIsDrawnOverParticles) {
+  Scene scene;
+  scene.particles = {{0.05}, {0.05}, {0.05}, {0.02}, {1.0}, {}};  // in front of the wall plane
+  scene.segments.push_back({{0.0, 0.05, 0.0}, {0.1, 0.05, 0.0}});
+  SnapshotOptions options = small_options();
+  options.wall_colour = {0, 0, 200};
+  options.wall_width_pixels = 3.0;
+  const Snapshot shot = shared_renderer().render(scene, options);
+  for (double x : {0.01, 0.05, 0.09}) {
+    EXPECT_TRUE(near(pixel_under(shot, {x, 0.05, 0.0}), Rgb8{0, 0, 200}, 40)) << "x " << x;
+  }
+}
+
 // A snapshot written as PNG reads back with the same pixels.
 TEST(Snapshot, PngWrittenAndReadable) {
   const Snapshot shot = shared_renderer().render(packed_slab(500), small_options());
