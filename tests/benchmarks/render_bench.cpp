@@ -55,6 +55,7 @@ void BM_RenderSpheres(benchmark::State& state) {
     benchmark::DoNotOptimize(shot.image.pixels.data());
   }
   state.counters["spheres"] = static_cast<double>(state.range(0));
+  state.SetLabel(renderer.gl_renderer());
 }
 BENCHMARK(BM_RenderSpheres)
     ->Arg(200000)
