@@ -37,9 +37,10 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
       hi = std::max(hi, w);
     }
     const double x = theta / kDeg;
+    const auto mm_or_gap = [](double w) { return std::isfinite(w) ? w * 1e3 : NAN; };
     band.x.push_back(x);
-    band.y.push_back(lo * 1e3);
-    band.y_upper.push_back(hi * 1e3);
+    band.y.push_back(mm_or_gap(lo));
+    band.y_upper.push_back(mm_or_gap(hi));
     jenike.x.push_back(x);
     jenike.y.push_back(std::isfinite(e.jenike.width) ? e.jenike.width * 1e3 : NAN);
     if (e.static_arch) {
@@ -49,9 +50,11 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
   }
   c.series = {band, jenike};
   if (!arch.x.empty()) c.series.push_back(arch);
+  double tallest = h.outlet_width * 1e3;
+  for (double y : band.y_upper)
+    if (std::isfinite(y)) tallest = std::max(tallest, y);
   c.series.push_back({"mass-flow limit", SeriesStyle::dashed,
-                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg},
-                      {0.0, *std::max_element(band.y_upper.begin(), band.y_upper.end())}, {}});
+                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg}, {0.0, tallest}, {}});
   c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}});
   c.note = "The band spans the material's uncertainty (delta, wall friction, flow function). The design "
            "outlet must sit above the band with the safety factor; Jenike errs wide (safe side).";
@@ -63,7 +66,10 @@ Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const Hopper
   const double length = wedge ? *h.slot_length : 1.0;
   Chart c{"mass_flow_rate_vs_outlet_width", "Discharge rate against outlet width", {"outlet width", "mm"},
           {wedge ? "mass flow rate (slot)" : "mass flow rate", "kg/s"}, {}, ""};
-  const double from = std::max(nominal.critical_width, 1e-3), to = std::max(2.5 * h.outlet_width, 2 * from);
+  // From the critical width (or where the correlations hold, B >= 6 d50) to well past the design.
+  const double arching = std::isfinite(nominal.critical_width) ? nominal.critical_width : 0.0;
+  const double from = std::max({arching, 6.0 * m.median_size.value_or(0.0), 0.2 * h.outlet_width});
+  const double to = std::max(2.5 * h.outlet_width, 2 * from);
   const auto widths = range(from, to, 25);
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
   for (const char* model : {"johanson", "beverloo", "brown"}) {

@@ -78,12 +78,20 @@ void draw_series(cairo_t* cr, const ChartSeries& s, const Scale& sx, const Scale
   switch (s.style) {
     case SeriesStyle::band: {
       if (s.y_upper.size() != n || n == 0) return;
-      cairo_new_path(cr);
-      for (std::size_t i = 0; i < n; ++i) cairo_line_to(cr, sx(s.x[i]), sy(s.y[i]));
-      for (std::size_t i = n; i-- > 0;) cairo_line_to(cr, sx(s.x[i]), sy(s.y_upper[i]));
-      cairo_close_path(cr);
+      // Each run of points with both edges finite is one filled polygon; gaps split the band.
+      auto usable = [&](std::size_t i) { return finite(i) && std::isfinite(s.y_upper[i]) && (!sy.logarithmic || s.y_upper[i] > 0); };
       set_colour(cr, colour, 0.18);
-      cairo_fill(cr);
+      for (std::size_t begin = 0; begin < n;) {
+        if (!usable(begin)) { ++begin; continue; }
+        std::size_t end = begin;
+        while (end < n && usable(end)) ++end;
+        cairo_new_path(cr);
+        for (std::size_t i = begin; i < end; ++i) cairo_line_to(cr, sx(s.x[i]), sy(s.y[i]));
+        for (std::size_t i = end; i-- > begin;) cairo_line_to(cr, sx(s.x[i]), sy(s.y_upper[i]));
+        cairo_close_path(cr);
+        cairo_fill(cr);
+        begin = end;
+      }
       return;
     }
     case SeriesStyle::points:

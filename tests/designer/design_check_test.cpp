@@ -1,0 +1,216 @@
+// The design checks on the reduced models: the seed's facts hold for loblolly pine, every band
+// contains its value, and the verdicts follow the [design] targets.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/design/design_check.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+DesignRecord check(const std::string& file, std::vector<SetOverride> sets = {},
+                   std::vector<std::string> models = {}) {
+  return design_check(load_case(file, sets), ModelChoices::parse(models));
+}
+
+const Estimate& result(const DesignRecord& r, const std::string& name) {
+  for (const auto& [n, e] : r.results)
+    if (n == name) return e;
+  throw std::runtime_error("no result " + name);
+}
+
+double value(const DesignRecord& r, const std::string& name) { return std::get<double>(result(r, name).value); }
+std::string text(const DesignRecord& r, const std::string& name) {
+  return std::get<std::string>(result(r, name).value);
+}
+
+std::string reasons(const DesignRecord& r) {
+  std::string s;
+  for (const auto& x : r.verdict.reasons) s += x + "\n";
+  return s;
+}
+
+// Seed 3.1.2 at 30 deg: the 60 mm outlet flows and the 20 mm outlet arches, so 20 < B_c < 60 mm;
+// the 30 deg wedge with 8.5 deg wall friction is mass flow (the lab observation).
+TEST(HopperCheck, PilotHopperReproducesTheSeed) {
+  const DesignRecord r = check("cases/pilot_hopper.toml");
+  EXPECT_EQ(text(r, "flow_pattern"), "mass");
+  const double bc = value(r, "critical_outlet_width");
+  EXPECT_GT(bc, 0.020);
+  EXPECT_LT(bc, 0.060);
+  EXPECT_EQ(result(r, "critical_outlet_width").unit, "m");
+  EXPECT_EQ(r.verdict.status, VerdictStatus::pass) << reasons(r);
+  const DesignRecord narrow = check("cases/pilot_hopper.toml", {{"hopper.outlet_width", "20 mm"}});
+  EXPECT_EQ(narrow.verdict.status, VerdictStatus::fail) << reasons(narrow);
+  EXPECT_NE(reasons(narrow).find("the outlet arches"), std::string::npos) << reasons(narrow);
+}
+
+// Every numeric estimate carries a band that contains its value, and the charts carry data.
+TEST(HopperCheck, BandsContainTheirValues) {
+  const DesignRecord r = check("cases/pilot_hopper.toml");
+  for (const auto& [name, e] : r.results) {
+    if (!e.is_number()) continue;
+    SCOPED_TRACE(name);
+    ASSERT_TRUE(e.low && e.high);
+    EXPECT_LE(*e.low, std::get<double>(e.value));
+    EXPECT_GE(*e.high, std::get<double>(e.value));
+    EXPECT_LT(*e.low, *e.high);  // the material's uncertainty widens every hopper estimate
+  }
+  EXPECT_EQ(r.charts.size(), 4u);
+  for (const auto& c : r.charts) EXPECT_FALSE(c.series.empty()) << c.id;
+  EXPECT_FALSE(r.assumptions.empty());
+}
+
+// Seed Fig. 3: the critical outlet width rises with the semi-angle.
+TEST(HopperCheck, CriticalWidthRisesWithSemiAngle) {
+  double previous = 0.0;
+  for (const char* angle : {"25 deg", "30 deg", "35 deg", "40 deg", "45 deg"}) {
+    const double bc = value(check("cases/pilot_hopper.toml", {{"hopper.semi_angle", angle}}), "critical_outlet_width");
+    EXPECT_GT(bc, previous) << angle;
+    previous = bc;
+  }
+}
+
+// More cohesion arches wider; a cohesionless solid never forms a cohesive arch (B_c = 0) but the
+// interlocking estimate remains.
+TEST(HopperCheck, CohesionTrendAndCohesionlessLimit) {
+  const double base = value(check("cases/pilot_hopper.toml"), "critical_outlet_width");
+  const double doubled = value(check("cases/pilot_hopper.toml", {{"material.flow_properties.ff_intercept", "100 Pa"}}),
+                               "critical_outlet_width");
+  EXPECT_GT(doubled, 1.8 * base);
+  const DesignRecord free = check("cases/pilot_hopper.toml", {{"material.flow_properties.ff_intercept", "0 Pa"},
+                                                              {"material.flow_properties.ff_slope", "0"}});
+  EXPECT_EQ(text(free, "arching"), "no cohesive arch");
+  EXPECT_EQ(value(free, "critical_outlet_width"), 0.0);
+  EXPECT_NEAR(value(free, "mechanical_arching_width"), 8 * 1.79e-3, 1e-9);
+  EXPECT_EQ(free.verdict.status, VerdictStatus::pass) << reasons(free);
+}
+
+// A flow function above the flow-factor line everywhere: no gravity outlet prevents arching.
+TEST(HopperCheck, NoGravityOutletFails) {
+  const DesignRecord r = check("cases/pilot_hopper.toml", {{"material.flow_properties.ff_slope", "0.95"}});
+  EXPECT_EQ(text(r, "arching"), "no gravity outlet");
+  EXPECT_EQ(r.verdict.status, VerdictStatus::fail);
+  EXPECT_NE(reasons(r).find("flow aids"), std::string::npos) << reasons(r);
+}
+
+// Past the mass-flow boundary the pattern is funnel, and a mass-flow requirement fails.
+TEST(HopperCheck, FlatWallsGiveFunnelFlow) {
+  const DesignRecord r = check("cases/pilot_hopper.toml", {{"hopper.semi_angle", "60 deg"},
+                                                           {"hopper.wall_friction_angle", "25 deg"},
+                                                           {"hopper.bin_width", "3 m"},
+                                                           {"hopper.fill_height", "2 m"}});
+  EXPECT_EQ(text(r, "flow_pattern"), "funnel");
+  EXPECT_EQ(r.verdict.status, VerdictStatus::fail);
+  EXPECT_NE(reasons(r).find("mass flow required"), std::string::npos) << reasons(r);
+}
+
+// The required throughput is judged against the discharge band.
+TEST(HopperCheck, ThroughputTarget) {
+  const DesignRecord r = check("cases/pilot_hopper.toml");
+  const auto& rate = result(r, "mass_flow_rate");
+  EXPECT_EQ(rate.unit, "kg/s");
+  EXPECT_NEAR(value(r, "mass_flow_rate"), value(r, "mass_flow_rate_per_metre") * 0.5, 1e-12);  // 0.5 m slot
+  const auto low = std::to_string(*rate.low * 0.9) + " kg/s";
+  EXPECT_EQ(check("cases/pilot_hopper.toml", {{"design.required_throughput", low}}).verdict.status,
+            VerdictStatus::pass);
+  const auto mid = std::to_string(0.5 * (*rate.low + std::get<double>(rate.value))) + " kg/s";
+  EXPECT_EQ(check("cases/pilot_hopper.toml", {{"design.required_throughput", mid}}).verdict.status,
+            VerdictStatus::marginal);
+  const auto high = std::to_string(std::get<double>(rate.value) * 1.5) + " kg/s";
+  EXPECT_EQ(check("cases/pilot_hopper.toml", {{"design.required_throughput", high}}).verdict.status,
+            VerdictStatus::fail);
+}
+
+// --model selects the radial stress field; it agrees with the closed form within the tolerance
+// reduced_models.md states for plane hoppers (-7 % .. +10.5 %).
+TEST(HopperCheck, RadialStressFieldModelChoice) {
+  const DesignRecord enstad = check("cases/pilot_hopper.toml");
+  const DesignRecord rsf = check("cases/pilot_hopper.toml", {}, {"hopper.flow_factor=rsf"});
+  EXPECT_NE(result(rsf, "flow_factor").model.find("radial stress field"), std::string::npos);
+  EXPECT_NEAR(value(rsf, "flow_factor") / value(enstad, "flow_factor"), 1.0, 0.105);
+  EXPECT_THROW(ModelChoices::parse(std::vector<std::string>{"hopper.flow_factr=rsf"}), InputError);
+  EXPECT_THROW(ModelChoices::parse(std::vector<std::string>{"hopper.flow_factor=magic"}), InputError);
+}
+
+// A material without flow properties cannot be judged, and the error names the missing section.
+TEST(HopperCheck, MaterialWithoutFlowPropertiesIsNamed) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  c.material.flow.reset();
+  try {
+    design_check(c);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material.flow_properties"), std::string::npos) << e.what();
+  }
+}
+
+// Seed 3.2: the material flows down the plane at 29.5 and 37 deg and leaves a thinner layer at
+// 37 deg; below theta1 it never flows.
+TEST(ChuteCheck, SeedAnglesFlowAndThinnerAtSteeper) {
+  const std::vector<std::string> fast{"chute.deposit=none"};
+  const DesignRecord low = check("cases/inclined_plane_29_5.toml", {}, fast);
+  const DesignRecord steep = check("cases/inclined_plane_37.toml", {}, fast);
+  EXPECT_EQ(low.verdict.status, VerdictStatus::pass) << reasons(low);
+  EXPECT_EQ(steep.verdict.status, VerdictStatus::pass) << reasons(steep);
+  EXPECT_GT(value(low, "stopping_thickness"), value(steep, "stopping_thickness"));
+  EXPECT_NEAR(value(low, "stopping_thickness"), 48.6e-3, 0.1e-3);  // reduced_models.md section 0
+  EXPECT_NEAR(value(steep, "stopping_thickness"), 3.5e-3, 0.05e-3);
+  const DesignRecord flat = check("cases/inclined_plane_29_5.toml", {{"chute.angle", "20 deg"}}, fast);
+  EXPECT_EQ(flat.verdict.status, VerdictStatus::fail);
+  EXPECT_EQ(text(flat, "deposit"), "never flows (below theta1)");
+}
+
+// The allowed deposit is judged against the stopping-thickness band.
+TEST(ChuteCheck, StoppingThicknessTarget) {
+  const std::vector<std::string> fast{"chute.deposit=none"};
+  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "10 mm"}}, fast).verdict.status,
+            VerdictStatus::pass);
+  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "5 mm"}}, fast).verdict.status,
+            VerdictStatus::marginal);
+  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "2 mm"}}, fast).verdict.status,
+            VerdictStatus::fail);
+}
+
+// Rung L1: the release from the bin comes to rest, conserves its material and leaves a deposit
+// of the order of h_stop at mid-ramp.
+TEST(ChuteCheck, L1ReleaseComesToRest) {
+  const DesignRecord r = check("cases/inclined_plane_29_5.toml");
+  const auto& deposit = result(r, "deposit_thickness_mid_ramp");
+  EXPECT_EQ(deposit.rung, Rung::L1);
+  EXPECT_GT(value(r, "deposit_thickness_mid_ramp"), 0.5 * value(r, "stopping_thickness"));
+  EXPECT_LT(value(r, "deposit_thickness_mid_ramp"), 2.0 * value(r, "stopping_thickness"));
+  EXPECT_GT(value(r, "time_to_rest"), 0.0);
+  EXPECT_EQ(r.charts.size(), 3u);
+}
+
+// Seed 3.3.2: the drum rolls at 10 and 20 rpm, cascades at 50 and centrifuges at 300; the angle
+// of repose rises with speed (seed Fig. 8); n_c = 111.1 rpm (test vector T9).
+TEST(DrumCheck, SeedRegimesAndRisingAngle) {
+  auto at = [](const char* speed) {
+    return check("cases/rotating_drum_20rpm.toml", {{"drum.speed", speed}, {"design.required_regime", "any"}});
+  };
+  const DesignRecord r10 = at("10 rpm"), r20 = at("20 rpm");
+  EXPECT_EQ(text(r10, "regime"), "rolling");
+  EXPECT_EQ(text(r20, "regime"), "rolling");
+  EXPECT_EQ(text(at("50 rpm"), "regime"), "cascading");
+  EXPECT_EQ(text(at("300 rpm"), "regime"), "centrifuging");
+  EXPECT_GT(value(r20, "dynamic_angle_of_repose"), value(r10, "dynamic_angle_of_repose"));
+  EXPECT_EQ(result(r20, "dynamic_angle_of_repose").unit, "deg");
+  EXPECT_NEAR(value(r20, "critical_speed"), 111.1, 0.1);
+  EXPECT_NEAR(value(r20, "froude_number"), 0.0324, 0.0001);
+}
+
+// The required regime is the drum's verdict.
+TEST(DrumCheck, RequiredRegimeVerdict) {
+  EXPECT_EQ(check("cases/rotating_drum_20rpm.toml").verdict.status, VerdictStatus::pass);
+  const DesignRecord fast = check("cases/rotating_drum_20rpm.toml", {{"drum.speed", "50 rpm"}});
+  EXPECT_EQ(fast.verdict.status, VerdictStatus::fail) << reasons(fast);
+  EXPECT_NE(reasons(fast).find("rolling required"), std::string::npos) << reasons(fast);
+}
+
+}  // namespace
+}  // namespace feedflow
