@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 #include "designer/design/hopper_assessment.hpp"
 #include "designer/design/hopper_charts.hpp"
@@ -139,10 +140,34 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
     results.emplace_back("mass_flow_rate_per_metre",
                          number(nominal.rate, "kg/(s*m)", rate_band, nominal.rate_model, Rung::L0));
   Band total_band{rate_band.low * length_factor, rate_band.high * length_factor};
+  const double rate = nominal.rate * length_factor;
   results.emplace_back("mass_flow_rate", number(nominal.rate * length_factor, "kg/s", total_band,
                                                 nominal.rate_model + (h.is_wedge() ? " x slot length" : ""),
                                                 Rung::L0));
+  // Emptying at the steady rate (the rate does not depend on the head, Beverloo/Johanson).
+  const double content = c.material.bulk.density * h.filled_volume();
+  const double loose = c.material.bulk.loose_density.value_or(c.material.bulk.density) * h.filled_volume();
+  results.emplace_back("hopper_content", number(content, "kg", Band{loose, content},
+                                                "filled volume x bulk density (loose .. design)", Rung::L0));
+  if (rate > 0.0)
+    results.emplace_back("discharge_time",
+                         number(content / rate, "s", Band{content / total_band.high, content / total_band.low},
+                                "hopper content / mass flow rate (steady discharge)", Rung::L0));
   record.charts = hopper_charts(h, m, models, nominal, pattern);
+  if (rate > 0.0) {
+    Chart emptying{"discharged_mass_vs_time", "Discharged mass against time", {"time", "s"},
+                   {"discharged mass", "kg"}, {}, ""};
+    for (const auto& [label, q, style] : {std::tuple{"steady discharge", rate, SeriesStyle::line},
+                                          std::tuple{"band, low rate", total_band.low, SeriesStyle::dashed},
+                                          std::tuple{"band, high rate", total_band.high, SeriesStyle::dashed}}) {
+      const double empty_at = content / q;
+      emptying.series.push_back({label, style, {0.0, empty_at, std::max(1.2 * content / total_band.low, empty_at)},
+                                 {0.0, content, content}, {}});
+    }
+    emptying.note = "Reduced model: a constant rate until the hopper is empty; a simulation shows the start-up and "
+                    "the end of discharge.";
+    record.charts.push_back(std::move(emptying));
+  }
 
   // Verdict.
   judge_pattern(c, h, pattern, verdict);
@@ -169,7 +194,6 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
       verdict.marginal("outlet " + mm(w) + " is within 3-8 d_max (" + mm(mechanical->low) + " .. " +
                        mm(mechanical->high) + "): interlocking arches are possible");
   }
-  const double rate = nominal.rate * length_factor;
   if (c.design.required_throughput) {
     const double req = *c.design.required_throughput;
     const auto status = verdict.judge_at_least(rate, total_band.low, req);

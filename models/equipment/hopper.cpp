@@ -1,5 +1,6 @@
 #include "models/equipment/hopper.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,6 +14,21 @@ constexpr std::string_view kShapes[] = {"wedge", "conical"};
 
 double Hopper::outlet_height() const { return 0.5 * outlet_width / std::tan(semi_angle); }
 double Hopper::transition_height() const { return 0.5 * bin_width / std::tan(semi_angle); }
+
+double Hopper::filled_volume() const {
+  const double t = std::tan(semi_angle);
+  const double h0 = outlet_height(), ht = transition_height();
+  const double top_of_cone = std::clamp(fill_height, h0, ht);
+  const double bin_part = std::max(0.0, fill_height - ht);
+  if (is_wedge()) {
+    // Cross-section 2 h tan(theta) wide at height h, then the bin's full width.
+    const double area = t * (top_of_cone * top_of_cone - h0 * h0) + bin_width * bin_part;
+    return area * slot_length.value_or(0.0);
+  }
+  // Frustum between the outlet and the transition, then the cylinder.
+  const double cone = std::numbers::pi / 3.0 * t * t * (std::pow(top_of_cone, 3) - std::pow(h0, 3));
+  return cone + std::numbers::pi / 4.0 * bin_width * bin_width * bin_part;
+}
 
 std::span<const FieldSpec<Hopper>> hopper_fields() {
   static const FieldSpec<Hopper> fields[] = {

@@ -22,6 +22,9 @@ struct Hopper {
   // Height of the apex-to-outlet cut-off and of the converging section, above the apex [m].
   double outlet_height() const;
   double transition_height() const;
+  // Volume of material when filled to fill_height: the converging section between the outlet
+  // and the transition, plus the bin above it. A wedge counts its slot length [m^3].
+  double filled_volume() const;
 };
 
 std::span<const FieldSpec<Hopper>> hopper_fields();

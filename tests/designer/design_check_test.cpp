@@ -59,7 +59,7 @@ TEST(HopperCheck, BandsContainTheirValues) {
     EXPECT_GE(*e.high, std::get<double>(e.value));
     EXPECT_LT(*e.low, *e.high);  // the material's uncertainty widens every hopper estimate
   }
-  EXPECT_EQ(r.charts.size(), 4u);
+  EXPECT_EQ(r.charts.size(), 5u);
   for (const auto& c : r.charts) EXPECT_FALSE(c.series.empty()) << c.id;
   EXPECT_FALSE(r.assumptions.empty());
 }

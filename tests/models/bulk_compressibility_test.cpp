@@ -48,3 +48,4 @@ TEST(BulkCompressibility, AbsentWithoutHypoplasticParameters) {
 
 }  // namespace
 }  // namespace feedflow
+
