@@ -156,3 +156,30 @@ TEST_F(FeedflowCli, DesignReportAndReportCommand) {
 }
 
 }  // namespace
+
+namespace {
+
+// --model picks an alternative model; unknown keys or names are bad input (exit 2).
+TEST_F(FeedflowCli, ModelChoice) {
+  const auto r = run_feedflow("design cases/pilot_hopper.toml --model hopper.flow_factor=rsf --json -", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(r.out);
+  EXPECT_NE(json.at("results").at("flow_factor").at("model").get<std::string>().find("radial stress field"),
+            std::string::npos);
+  fs::remove_all(dir_ / "out");
+  const auto bad = run_feedflow("design cases/pilot_hopper.toml --model hopper.flow_factor=magic", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--model: hopper.flow_factor"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+// The design summary is a table of quantity, value, band, rung and model, with the verdict.
+TEST_F(FeedflowCli, DesignPrintsResultTable) {
+  const auto r = run_feedflow("design cases/pilot_hopper.toml", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* text : {"quantity", "band", "critical outlet width", " mm ", "mass flow rate", "kg/s",
+                           "Verdict: PASS"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text;
+}
+
+}  // namespace
