@@ -4,6 +4,7 @@
 #include <ctime>
 #include <stdexcept>
 
+#include "designer/design/hopper_snapshot.hpp"
 #include "fullsim/common/atomic_file.hpp"
 #include "models/core/errors.hpp"
 #include "reports/document/report_content.hpp"
@@ -26,7 +27,9 @@ std::string utc_now() {
 
 std::vector<std::filesystem::path> write_report_files(const std::filesystem::path& folder,
                                                       const DesignRecord& record) {
-  const ReportContent content = design_report_content(record, {}, utc_now());
+  std::vector<ReportImage> pictures;
+  if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));
+  const ReportContent content = design_report_content(record, pictures, utc_now());
   const auto pdf = folder / "report.pdf";
   const auto html = folder / "report.html";
   try {

@@ -102,7 +102,7 @@ ReportContent design_report_content(const DesignRecord& r, const std::vector<Rep
     for (const auto& chart : r.charts) c.blocks.push_back(ReportChart{chart});
   }
   if (!snapshots.empty()) {
-    c.blocks.push_back(ReportHeading{"Simulation snapshots"});
+    c.blocks.push_back(ReportHeading{"Pictures"});
     for (const auto& s : snapshots) c.blocks.push_back(s);
   }
 

@@ -18,6 +18,21 @@ void write_png(const RgbaImage& image, const std::filesystem::path& file) {
   }
 }
 
+std::string encode_png(const RgbaImage& image) {
+  const CairoSurface surface = to_cairo_surface(image);
+  std::string bytes;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(
+      surface.get(),
+      [](void* closure, const unsigned char* data, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &bytes);
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("cannot encode PNG: ") + cairo_status_to_string(status));
+  return bytes;
+}
+
 RgbaImage read_png(const std::filesystem::path& file) {
   CairoSurface surface(cairo_image_surface_create_from_png(file.c_str()));
   const cairo_status_t status = cairo_surface_status(surface.get());

@@ -2,6 +2,7 @@
 // An 8-bit RGBA image in memory (rows top to bottom, straight alpha) and its PNG file.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace feedflow::render {
@@ -38,6 +39,8 @@ struct RgbaImage {
 // Writes `image` as a PNG (through cairo). Throws std::runtime_error naming the file on failure.
 void write_png(const RgbaImage& image, const std::filesystem::path& file);
 
+// The PNG bytes of `image` (for embedding in reports). Throws std::runtime_error on failure.
+std::string encode_png(const RgbaImage& image);
 // Reads a PNG back. Throws std::runtime_error naming the file when it is missing or not a PNG.
 RgbaImage read_png(const std::filesystem::path& file);
 
