@@ -1,0 +1,111 @@
+#pragma once
+// Normal part `hysteretic_nonlinear2`: Chen et al. (2022) hysteretic law with exponential
+// unloading, seed Eq. 7, exactly as models.md 3.3 (LIGGGHTS-INL `hysteretic/nonlinear2`),
+// including its quirks: branch choice from the overlap and the normal velocity, the offsets
+// that make reloading continuous, the damping forms (loading g(k1)(sqrt(delta)+sqrt(delta0)),
+// unloading 0.001 g(k1_old) delta^-1/4) and k_t = k1, gamma_t = gamma_n handed on.
+// Cohesion (models.md 3.5, [I]): below delta0 the force is max(exponential tail, -k_c delta),
+// the same construction as model 1; it only matters when the cohesion part does not clip.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string_view>
+
+#include "models/contact/contact_kinematics.hpp"
+#include "models/contact/hysteretic_parameters.hpp"
+#include "models/contact/normal_response.hpp"
+
+namespace feedflow {
+
+class HystereticNonlinear2 {
+ public:
+  static constexpr std::string_view kKeyword = "hysteretic_nonlinear2";
+  static constexpr std::size_t kHistorySize = hysteretic_slot::count;
+  static constexpr bool kHasCohesionBranch = true;
+  static constexpr bool kRollingOnTotalForce = true;  // INL `cdtnonlinear2`: F_ref = F_n
+
+  HystereticNonlinear2() = default;
+  explicit HystereticNonlinear2(const HystereticParameters& p) : p_(p) {}
+  static HystereticNonlinear2 from_material(const DemContactParameters& p) {
+    return HystereticNonlinear2(HystereticParameters::from_material(p));
+  }
+  const HystereticParameters& parameters() const { return p_; }
+
+  NormalResponse respond(const ContactInput& in, double* h) const {
+    namespace s = hysteretic_slot;
+    const double d = in.overlap;
+    const double d_old = h[s::previous_overlap];
+    const double d0 = h[s::plastic_overlap];
+    const double dmax = std::max(h[s::max_overlap], d);
+    h[s::max_overlap] = dmax;
+    const bool loading = d >= d_old && (d_old == 0.0 || in.normal_velocity <= 0.0);
+    double f = 0.0;
+    double gamma = 0.0;
+    double k1 = 0.0;
+    if (loading) {
+      k1 = d0 == 0.0 ? p_.a2 : h[s::loading_stiffness];
+      h[s::loading_offset_old] = h[s::loading_offset];
+      if (d > d0) {
+        f = p_.alpha * k1 * (d - d0) * (d - d0) + h[s::loading_offset];
+      } else {
+        f = p_.c * p_.a3 * k1 * std::expm1(h[s::unloading_shape] * (d - d0));
+        f = std::max(f, -p_.cohesion_stiffness * d);
+      }
+      h[s::plastic_overlap_old] = d0;
+      h[s::loading_stiffness_old] = k1;
+      h[s::loading_stiffness] = k1;
+      h[s::previous_overlap] = d;
+      gamma = damping_scale(in.effective_mass, k1) * (std::sqrt(d) + std::sqrt(d0));
+    } else {
+      const double k1_old = h[s::loading_stiffness_old];
+      const double d0_old = h[s::plastic_overlap_old];
+      const double k2 = p_.a3 * (p_.a1 * dmax + p_.a2);
+      const double d0_new = (1.0 - k1_old / k2) * dmax;
+      const double beta = std::log(p_.alpha * k1_old * (dmax - d0_old) * (dmax - d0_old) /
+                                   (p_.c * k2) + 1.0) / (dmax - d0_new);
+      k1 = p_.a1 * dmax + p_.a2;
+      const double x = d - d0_new;
+      if (d >= d0_new) {
+        f = p_.c * k2 * std::expm1(beta * x) + x * h[s::loading_offset_old] / (dmax - d0_new);
+        h[s::loading_offset] = f - p_.alpha * k1 * x * x;
+      } else {
+        f = std::max(p_.c * k2 * std::expm1(beta * x), -p_.cohesion_stiffness * d);
+        h[s::loading_offset] = 0.0;
+      }
+      h[s::plastic_overlap] = d0_new;
+      h[s::loading_stiffness] = k1;
+      h[s::previous_overlap] = d;
+      h[s::unloading_shape] = beta;
+      gamma = 0.001 * damping_scale(in.effective_mass, k1_old) / std::sqrt(std::sqrt(d));
+    }
+    return {f - gamma * in.normal_velocity, f, k1, gamma};
+  }
+
+  // Largest of the loading slope at the current overlap and the slope of the unloading curve
+  // that a reversal at delta_max would follow (models.md 5.1), from the history after respond.
+  double spring_stiffness(const ContactInput& in, const double* h) const {
+    namespace s = hysteretic_slot;
+    const double dmax = h[s::max_overlap];
+    if (dmax <= 0.0) return 0.0;
+    const double k1 = h[s::loading_stiffness];
+    const double loading = 2.0 * p_.alpha * k1 * std::max(in.overlap - h[s::plastic_overlap], 0.0);
+    const double k1_old = h[s::loading_stiffness_old];
+    const double d0_old = h[s::plastic_overlap_old];
+    const double k2 = p_.a3 * (p_.a1 * dmax + p_.a2);
+    const double d0_new = (1.0 - k1_old / k2) * dmax;
+    const double peak = p_.alpha * k1_old * (dmax - d0_old) * (dmax - d0_old);
+    const double beta = std::log(peak / (p_.c * k2) + 1.0) / (dmax - d0_new);
+    const double unloading = beta * (peak + p_.c * k2) +
+                             h[s::loading_offset_old] / (dmax - d0_new);
+    return std::max(loading, unloading);
+  }
+
+ private:
+  // g = sqrt(4 m* alpha K / (1 + (pi/ln e)^2)) (models.md 3.3 step 5)
+  double damping_scale(double mass, double stiffness) const {
+    return std::sqrt(4.0 * mass * p_.alpha * stiffness * p_.damping_factor);
+  }
+  HystereticParameters p_;
+};
+
+}  // namespace feedflow
