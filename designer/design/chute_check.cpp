@@ -113,6 +113,17 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
     high = std::max(high, t.thickness);
   }
   results.emplace_back("stopping_thickness", length_estimate(nominal.thickness, low, high, model_name(models), Rung::L0));
+  if (m.surface_flow->cohesion > 0.0) {
+    // The Mohr-Coulomb infinite slope with the low-stress cohesion, friction tan(theta1).
+    const auto slope = cohesive_stopping_depth({m.surface_flow->cohesion, m.surface_flow->theta1, m.bulk.density},
+                                               chute.angle);
+    if (slope.normal.outcome == DepositOutcome::Deposit)
+      results.emplace_back("stopping_thickness_cohesive_slope",
+                           length_estimate(slope.normal.thickness, slope.normal.thickness, slope.normal.thickness,
+                                           "cohesive Mohr-Coulomb infinite slope (c, phi = theta1)", Rung::L0));
+    else
+      verdict.note("cohesive infinite slope: " + slope.normal.words);
+  }
 
   // Rung L1: the release from the bin through the gate, run to rest.
   std::optional<double> deposit_l1;
@@ -150,12 +161,23 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
                    "mid-ramp.";
     Chart front{"front_position", "Front position against time (L1)", {"time", "s"}, {"front position", "m"}, {}, ""};
     ChartSeries f{"front", SeriesStyle::line, {}, {}, {}};
+    Chart speed{"velocity_vs_time", "Depth-averaged velocity against time (L1)", {"time", "s"},
+                {"velocity", "m/s"}, {}, ""};
+    ChartSeries mean{"mean on the ramp", SeriesStyle::line, {}, {}, {}};
+    ChartSeries at_front{"at the front", SeriesStyle::dashed, {}, {}, {}};
     for (const auto& sample : run.samples) {
       f.x.push_back(sample.time);
       f.y.push_back(sample.front_position);
+      mean.x.push_back(sample.time);
+      mean.y.push_back(sample.mean_velocity);
+      at_front.x.push_back(sample.time);
+      at_front.y.push_back(sample.front_velocity);
     }
     front.series = {f};
     front.note = "Distance of the farthest material from the gate; it reaches the ramp end when material leaves.";
+    speed.series = {mean, at_front};
+    speed.note = "Volume-weighted depth-averaged velocity on the ramp and the velocity at the front.";
+    record.charts.push_back(std::move(speed));
     record.charts.push_back(std::move(profile));
     record.charts.push_back(std::move(front));
   }

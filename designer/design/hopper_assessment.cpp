@@ -23,10 +23,19 @@ HopperMaterial HopperMaterial::of(const Material& m, const ModelChoices& models)
   HopperMaterial hm;
   hm.flow = *m.flow;
   const auto compressibility = BulkCompressibility::of(m);
-  if (models["hopper.bulk_density"] == "compressible" && compressibility) {
+  if (compressibility) hm.particle_density = compressibility->solid_density();
+  const auto choice = models["hopper.bulk_density"];
+  const bool has_table = !hm.flow.density.empty();
+  if (choice == "table" && !has_table)
+    throw InputError("--model", "hopper.bulk_density",
+                     "table chosen, but material " + m.name + " has no density_major_stress/density table in "
+                     "[flow_properties]");
+  if (choice == "compressible" && compressibility) {
     hm.density = BulkDensity::compressible(*compressibility);
     hm.density_model = "critical-state density from the Bauer compression law (hypoplastic parameters)";
-    hm.particle_density = compressibility->solid_density();
+  } else if (choice != "constant" && has_table) {
+    hm.density = BulkDensity::tabulated(hm.flow.density_major_stress, hm.flow.density);
+    hm.density_model = "measured compressibility table rho_b(sigma1)";
   } else {
     hm.density = BulkDensity::constant(m.bulk.density);
     hm.density_model = "constant design bulk density";

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <tuple>
 
 #include "designer/design/hopper_assessment.hpp"
@@ -141,6 +142,17 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
                          number(nominal.rate, "kg/(s*m)", rate_band, nominal.rate_model, Rung::L0));
   Band total_band{rate_band.low * length_factor, rate_band.high * length_factor};
   const double rate = nominal.rate * length_factor;
+  // Hourglass theory neglects wall friction: an upper bound only (plane needs phi > 19.5 deg).
+  try {
+    const double r1 = h.fill_height / std::cos(h.semi_angle);
+    const double bound = hourglass_rate(g, nominal.johanson.bulk_density, h.outlet_width, h.semi_angle,
+                                        m.flow.effective_friction_angle, r1) *
+                         nominal.drag_factor * length_factor;
+    results.emplace_back("mass_flow_rate_upper_bound",
+                         number(bound, "kg/s", Band{}, "hourglass theory (no wall friction): an upper bound", Rung::L0));
+  } catch (const std::invalid_argument&) {
+    verdict.note("the hourglass upper bound does not apply (internal friction too low)");
+  }
   results.emplace_back("mass_flow_rate", number(nominal.rate * length_factor, "kg/s", total_band,
                                                 nominal.rate_model + (h.is_wedge() ? " x slot length" : ""),
                                                 Rung::L0));

@@ -12,7 +12,7 @@ namespace {
 constexpr std::string_view kFlowFactor[] = {"enstad", "rsf"};
 constexpr std::string_view kCriticalOutlet[] = {"envelope", "jenike", "static_arch"};
 constexpr std::string_view kDischarge[] = {"johanson", "beverloo", "brown"};
-constexpr std::string_view kBulkDensity[] = {"compressible", "constant"};
+constexpr std::string_view kBulkDensity[] = {"compressible", "table", "constant"};
 constexpr std::string_view kStopping[] = {"pouliquen", "hybrid"};
 constexpr std::string_view kDeposit[] = {"l1", "none"};
 
@@ -24,7 +24,8 @@ constexpr ModelOption kOptions[] = {
     {"hopper.discharge", "johanson", kDischarge,
      "johanson (cohesive, mass flow), beverloo (empirical) or brown (minimum energy, wedge)"},
     {"hopper.bulk_density", "compressible", kBulkDensity,
-     "compressible: rho_b at the local stress from the Bauer law; constant: the design density"},
+     "compressible: rho_b at the local stress from the Bauer law (or the material's table when it has no "
+     "hypoplastic parameters); table: the measured compressibility table; constant: the design density"},
     {"chute.stopping_thickness", "pouliquen", kStopping,
      "pouliquen: h_stop law; hybrid: Pouliquen plus the low-stress cohesion"},
     {"chute.deposit", "l1", kDeposit,

@@ -40,6 +40,10 @@ std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
       number_field<F>("wall_friction_uncertainty", &F::wall_friction_uncertainty, dim::angle,
                       "deg", Range::closed(0.0, 15.0 * kDeg), "uncertainty of the wall friction angle",
                       opt),
+      number_list_field<F>("density_major_stress", &F::density_major_stress, dim::pressure, "Pa",
+                           Range::non_negative(), "measured compressibility: major consolidation stresses"),
+      number_list_field<F>("density", &F::density, dim::density, "kg/m^3", Range::positive(),
+                           "measured compressibility: bulk density at those stresses"),
   };
   return fields;
 }
@@ -55,6 +59,12 @@ std::vector<FieldProblem> check(const FlowProperties& p) {
                  p.ff_major_stress.end())
       problems.push_back({"ff_major_stress", "must increase strictly"});
   }
+  if (p.density.size() != p.density_major_stress.size() ||
+      (!p.density.empty() && p.density.size() < 2))
+    problems.push_back({"density", "a compressibility table needs density_major_stress and density lists of "
+                                   "the same length, at least 2 points"});
+  else if (!std::is_sorted(p.density_major_stress.begin(), p.density_major_stress.end()))
+    problems.push_back({"density_major_stress", "must increase"});
   return problems;
 }
 

@@ -26,6 +26,8 @@ struct FlowProperties {
   double effective_friction_angle = 0.0;  // delta [rad]
   double effective_friction_uncertainty = 0.05235987755982988;  // +- on delta [rad] (3 deg)
   double wall_friction_uncertainty = 0.03490658503988659;      // +- on phi_w [rad] (2 deg)
+  std::vector<double> density_major_stress;  // measured compressibility: sigma1 [Pa] ...
+  std::vector<double> density;               // ... and the bulk density there [kg/m^3]
 };
 
 struct SurfaceFlowProperties {
