@@ -76,6 +76,7 @@ json chart_json(const Chart& c) {
   for (const auto& s : c.series) {
     json one = {{"label", s.label}, {"style", to_string(s.style)}, {"x", s.x}, {"y", s.y}};
     if (!s.y_upper.empty()) one["y_upper"] = s.y_upper;
+    if (s.colour >= 0) one["colour"] = s.colour;
     series.push_back(std::move(one));
   }
   return {{"id", c.id},       {"title", c.title},   {"x", axis_json(c.x)},
@@ -97,6 +98,7 @@ Chart chart_from(const json& j) {
     one.x = field(s, "x", where).get<std::vector<double>>();
     one.y = field(s, "y", where).get<std::vector<double>>();
     one.y_upper = s.value("y_upper", std::vector<double>{});
+    one.colour = s.value("colour", -1);
     if (one.x.size() != one.y.size() || (!one.y_upper.empty() && one.y_upper.size() != one.x.size()))
       throw std::invalid_argument(where + ": series \"" + one.label + "\" has x and y of different lengths");
     c.series.push_back(std::move(one));

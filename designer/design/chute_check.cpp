@@ -53,8 +53,8 @@ Chart stop_against_angle(const Chute& chute, const Material& m, const ModelChoic
   const auto& s = *m.surface_flow;
   Chart c{"stopping_thickness_vs_angle", "Stopping thickness against chute angle", {"chute angle", "deg"},
           {"stopping thickness", "mm"}, {}, ""};
-  ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}};
-  ChartSeries line{"h_stop", SeriesStyle::line, {}, {}, {}};
+  ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}, 0};
+  ChartSeries line{"h_stop", SeriesStyle::line, {}, {}, {}, 0};
   const auto laws = corner_laws(s);
   const double from = s.theta1 + 0.25 * (s.theta2 - s.theta1) * 0.5, to = s.theta2;
   for (int i = 0; i < 40; ++i) {
@@ -78,7 +78,7 @@ Chart stop_against_angle(const Chute& chute, const Material& m, const ModelChoic
   c.series = {band, line};
   const auto design = stop_of(law_of(s), m, chute.angle, models);
   if (design.outcome == DepositOutcome::Deposit)
-    c.series.push_back({"design angle", SeriesStyle::marker, {chute.angle / kDeg}, {design.thickness * 1e3}, {}});
+    c.series.push_back({"design angle", SeriesStyle::marker, {chute.angle / kDeg}, {design.thickness * 1e3}, {}, 6});
   c.note = "No layer stops above theta2; below theta1 nothing flows. The band spans the uncertainty of theta1, "
            "theta2 and L (upper edge clipped at 5 x the nominal value).";
   return c;
@@ -156,7 +156,7 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
       h.y.push_back(run.thickness[i] * 1e3);
     }
     profile.series = {h, {"h_stop (L0)", SeriesStyle::dashed, {0.0, chute.length}, {nominal.thickness * 1e3, nominal.thickness * 1e3}, {}},
-                      {"mid-ramp", SeriesStyle::marker, {chute.length / 2}, {run.probe_thickness * 1e3}, {}}};
+                      {"mid-ramp", SeriesStyle::marker, {chute.length / 2}, {run.probe_thickness * 1e3}, {}, 6}};
     profile.note = "First-order scheme: coarse cells leave a slightly thicker deposit; the seed measured h_stop at "
                    "mid-ramp.";
     Chart front{"front_position", "Front position against time (L1)", {"time", "s"}, {"front position", "m"}, {}, ""};

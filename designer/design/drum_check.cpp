@@ -76,8 +76,8 @@ void check_drum(const Case& c, const Drum& drum, DesignRecord& record, VerdictBu
     // Angle of repose against speed over the rolling range.
     Chart chart{"angle_of_repose_vs_speed", "Dynamic angle of repose against speed (rolling regime)",
                 {"drum speed", "rpm"}, {"dynamic angle of repose", "deg"}, {}, ""};
-    ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}};
-    ChartSeries line{"mu(I) flowing layer", SeriesStyle::line, {}, {}, {}};
+    ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}, 0};
+    ChartSeries line{"mu(I) flowing layer", SeriesStyle::line, {}, {}, {}, 0};
     const double top = regime.critical_speed * std::sqrt(thresholds.rolling_to_cascading);
     const double bottom = regime.critical_speed * std::sqrt(thresholds.slumping_to_rolling) * 1.05;
     for (int i = 0; i < 30; ++i) {
@@ -97,7 +97,7 @@ void check_drum(const Case& c, const Drum& drum, DesignRecord& record, VerdictBu
       band.y.push_back(lo / kDeg);
       band.y_upper.push_back(hi / kDeg);
     }
-    chart.series = {band, line, {"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {nominal / kDeg}, {}}};
+    chart.series = {band, line, {"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {nominal / kDeg}, {}, 6}};
     chart.note = "The band spans the flowing-layer thickness (c_delta) and +- the uncertainty of theta1 and theta2.";
     record.charts.push_back(std::move(chart));
   } else if (regime.regime != DrumRegime::Rolling) {
@@ -121,7 +121,7 @@ void check_drum(const Case& c, const Drum& drum, DesignRecord& record, VerdictBu
                                                   {"centrifuging (outer layer)", thresholds.centrifuging}};
   for (const auto& [name, fr] : lines)
     map.series.push_back({name, SeriesStyle::dashed, {0.0, n_max / kRpm}, {fr, fr}, {}});
-  map.series.push_back({"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {regime.froude}, {}});
+  map.series.push_back({"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {regime.froude}, {}, 6});
   map.note = "Regime boundaries are material thresholds on Fr = (n/n_c)^2; the whole bed centrifuges from "
              "Fr = 1/sqrt(1 - f).";
   record.charts.push_back(std::move(map));

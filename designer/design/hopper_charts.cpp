@@ -25,39 +25,54 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
   const double top = std::min(60.0 * kDeg, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDeg);
   const auto angles = range(5.0 * kDeg, top, 23);
   const auto corners = material_variants(m, *h.wall_friction_angle, true);
-  ChartSeries band{"uncertainty band", SeriesStyle::band, {}, {}, {}};
-  ChartSeries jenike{"Jenike H(theta)", SeriesStyle::line, {}, {}, {}};
-  ChartSeries arch{"static arch H_a", SeriesStyle::dashed, {}, {}, {}};
+  const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
+  // One band per model over the corners of the material's uncertainty.
+  ChartSeries jenike_band{"Jenike band", SeriesStyle::band, {}, {}, {}, 0};
+  ChartSeries arch_band{"static-arch band", SeriesStyle::band, {}, {}, {}, 1};
+  ChartSeries jenike{"Jenike H(theta)", SeriesStyle::line, {}, {}, {}, 0};
+  ChartSeries arch{"static arch H_a", SeriesStyle::dashed, {}, {}, {}, 1};
+  const auto mm_or_gap = [](double w) { return std::isfinite(w) ? w * 1e3 : NAN; };
   for (double theta : angles) {
-    const auto e = evaluate_hopper(h, theta, h.outlet_width, m, material_variants(m, *h.wall_friction_angle).front(), models);
-    double lo = e.critical_width, hi = e.critical_width;
-    for (const auto& v : corners) {
-      const double w = evaluate_hopper(h, theta, h.outlet_width, m, v, models).critical_width;
-      lo = std::min(lo, w);
-      hi = std::max(hi, w);
-    }
     const double x = theta / kDeg;
-    const auto mm_or_gap = [](double w) { return std::isfinite(w) ? w * 1e3 : NAN; };
-    band.x.push_back(x);
-    band.y.push_back(mm_or_gap(lo));
-    band.y_upper.push_back(mm_or_gap(hi));
+    const auto e = evaluate_hopper(h, theta, h.outlet_width, m, nominal_variant, models);
+    double j_lo = e.jenike.width, j_hi = e.jenike.width;
+    double a_lo = e.static_arch ? e.static_arch->width : NAN, a_hi = a_lo;
+    for (const auto& v : corners) {
+      const auto corner = evaluate_hopper(h, theta, h.outlet_width, m, v, models);
+      j_lo = std::min(j_lo, corner.jenike.width);
+      j_hi = std::max(j_hi, corner.jenike.width);
+      if (corner.static_arch) {
+        a_lo = std::min(a_lo, corner.static_arch->width);
+        a_hi = std::max(a_hi, corner.static_arch->width);
+      }
+    }
+    jenike_band.x.push_back(x);
+    jenike_band.y.push_back(mm_or_gap(j_lo));
+    jenike_band.y_upper.push_back(mm_or_gap(j_hi));
     jenike.x.push_back(x);
-    jenike.y.push_back(std::isfinite(e.jenike.width) ? e.jenike.width * 1e3 : NAN);
+    jenike.y.push_back(mm_or_gap(e.jenike.width));
     if (e.static_arch) {
+      arch_band.x.push_back(x);
+      arch_band.y.push_back(mm_or_gap(a_lo));
+      arch_band.y_upper.push_back(mm_or_gap(a_hi));
       arch.x.push_back(x);
-      arch.y.push_back(std::isfinite(e.static_arch->width) ? e.static_arch->width * 1e3 : NAN);
+      arch.y.push_back(mm_or_gap(e.static_arch->width));
     }
   }
-  c.series = {band, jenike};
+  c.series = {jenike_band};
+  if (!arch.x.empty()) c.series.push_back(arch_band);
+  c.series.push_back(jenike);
   if (!arch.x.empty()) c.series.push_back(arch);
+  std::vector<double> uppers = jenike_band.y_upper;
+  uppers.insert(uppers.end(), arch_band.y_upper.begin(), arch_band.y_upper.end());
   double tallest = h.outlet_width * 1e3;
-  for (double y : band.y_upper)
+  for (double y : uppers)
     if (std::isfinite(y)) tallest = std::max(tallest, y);
   c.series.push_back({"mass-flow limit", SeriesStyle::dashed,
-                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg}, {0.0, tallest}, {}});
-  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}});
-  c.note = "The band spans the material's uncertainty (delta, wall friction, flow function). The design "
-           "outlet must sit above the band with the safety factor; Jenike errs wide (safe side).";
+                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg}, {0.0, tallest}, {}, 2});
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}, 6});
+  c.note = "Each model's band spans the material's uncertainty (delta, wall friction, flow function). The "
+           "design outlet must sit above the bands with the safety factor; Jenike errs wide (safe side).";
   return c;
 }
 
@@ -86,7 +101,7 @@ Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const Hopper
     }
     c.series.push_back(std::move(s));
   }
-  c.series.push_back({"design outlet", SeriesStyle::marker, {h.outlet_width * 1e3}, {nominal.rate * length}, {}});
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.outlet_width * 1e3}, {nominal.rate * length}, {}, 6});
   c.note = "Johanson goes to zero at the critical outlet width; the spread between the correlations is part of "
            "the rate's band.";
   return c;
@@ -97,8 +112,8 @@ Chart pattern_chart(const Hopper& h, const HopperMaterial& m, const FlowPatternV
   Chart c{"flow_pattern_chart", "Mass-flow limit against wall friction", {"wall friction angle", "deg"},
           {"hopper semi-angle", "deg"}, {}, ""};
   const double delta = m.flow.effective_friction_angle;
-  ChartSeries band{"limit band", SeriesStyle::band, {}, {}, {}};
-  ChartSeries line{"mass-flow limit", SeriesStyle::line, {}, {}, {}};
+  ChartSeries band{"limit band", SeriesStyle::band, {}, {}, {}, 0};
+  ChartSeries line{"mass-flow limit", SeriesStyle::line, {}, {}, {}, 0};
   for (double phi : range(0.0, std::min(delta - 1.0 * kDeg, 45.0 * kDeg), 30)) {
     const auto limit = mass_flow_limit(g, delta, phi);
     band.x.push_back(phi / kDeg);
@@ -108,7 +123,7 @@ Chart pattern_chart(const Hopper& h, const HopperMaterial& m, const FlowPatternV
     line.y.push_back(limit.nominal / kDeg);
   }
   c.series = {band, line,
-              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDeg}, {h.semi_angle / kDeg}, {}}};
+              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDeg}, {h.semi_angle / kDeg}, {}, 6}};
   c.note = "Below the line: mass flow; above it: funnel flow. " + pattern.limit.model + ".";
   return c;
 }

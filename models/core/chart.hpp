@@ -23,6 +23,7 @@ struct ChartSeries {
   std::vector<double> x;        // in the x axis unit
   std::vector<double> y;        // in the y axis unit; for a band, the lower edge
   std::vector<double> y_upper;  // band only: the upper edge
+  int colour = -1;              // palette index; -1: by position (a band and its line may share one)
 };
 
 struct Chart {

@@ -170,6 +170,11 @@ void draw_legend_entry(cairo_t* cr, const ChartSeries& s, const style::Colour& c
   text_at(cr, s.label, x + 21, y, style::kTickSize, 0.0, 0.5);
 }
 
+style::Colour colour_of(const ChartSeries& s, std::size_t position) {
+  const std::size_t index = s.colour >= 0 ? static_cast<std::size_t>(s.colour) : position;
+  return style::kSeries[index % style::kSeries.size()];
+}
+
 cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
   static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
   return CAIRO_STATUS_SUCCESS;
@@ -237,7 +242,7 @@ void paint_chart(cairo_t* cr, const Chart& chart, double x, double y, double wid
   for (int pass = 0; pass < 2; ++pass)
     for (std::size_t i = 0; i < chart.series.size(); ++i)
       if ((chart.series[i].style == SeriesStyle::band) == (pass == 0))
-        draw_series(cr, chart.series[i], sx, sy, style::kSeries[i % style::kSeries.size()]);
+        draw_series(cr, chart.series[i], sx, sy, colour_of(chart.series[i], i));
   cairo_restore(cr);
 
   // Legend, top right inside the plot.
@@ -256,7 +261,7 @@ void paint_chart(cairo_t* cr, const Chart& chart, double x, double y, double wid
     cairo_rectangle(cr, bx, by, box_w, box_h);
     cairo_fill(cr);
     for (std::size_t i = 0; i < chart.series.size(); ++i)
-      draw_legend_entry(cr, chart.series[i], style::kSeries[i % style::kSeries.size()], bx + 4,
+      draw_legend_entry(cr, chart.series[i], colour_of(chart.series[i], i), bx + 4,
                         by + 3 + row * (i + 0.5));
   }
   cairo_restore(cr);
