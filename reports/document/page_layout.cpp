@@ -217,14 +217,10 @@ void PageLayout::table(const std::vector<std::string>& header,
   y_ += size;
 }
 
-void PageLayout::chart(const Chart& c, double height, const std::string& caption) {
-  const auto caption_lines = wrap(caption, text_width(), 8, false);
-  ensure(height + caption_lines.size() * line_height(8) + 6);
-  paint_chart(cr_, c, kMargin, y_, text_width(), height);
-  y_ += height + 4;
-  for (const auto& line : caption_lines) {
-    set_font(8, false);
-    cairo_set_source_rgb(cr_, 0.3, 0.3, 0.3);
+void PageLayout::caption(const std::vector<std::string>& lines) {
+  set_font(8, false);
+  cairo_set_source_rgb(cr_, 0.3, 0.3, 0.3);
+  for (const auto& line : lines) {
     cairo_move_to(cr_, kMargin, y_ + 8);
     cairo_show_text(cr_, line.c_str());
     y_ += line_height(8);
@@ -232,7 +228,15 @@ void PageLayout::chart(const Chart& c, double height, const std::string& caption
   y_ += 10;
 }
 
-void PageLayout::image(const std::string& png, double width, const std::string& caption) {
+void PageLayout::chart(const Chart& c, double height, const std::string& caption_text) {
+  const auto caption_lines = wrap(caption_text, text_width(), 8, false);
+  ensure(height + caption_lines.size() * line_height(8) + 6);
+  paint_chart(cr_, c, kMargin, y_, text_width(), height);
+  y_ += height + 4;
+  caption(caption_lines);
+}
+
+void PageLayout::image(const std::string& png, double width, const std::string& caption_text) {
   PngReader reader{&png, 0};
   cairo_surface_t* img = cairo_image_surface_create_from_png_stream(read_png, &reader);
   if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS) {
@@ -241,7 +245,7 @@ void PageLayout::image(const std::string& png, double width, const std::string& 
   }
   const double w = cairo_image_surface_get_width(img), h = cairo_image_surface_get_height(img);
   const double scale = std::min(width, text_width()) / w;
-  const auto caption_lines = wrap(caption, text_width(), 8, false);
+  const auto caption_lines = wrap(caption_text, text_width(), 8, false);
   ensure(h * scale + caption_lines.size() * line_height(8) + 6);
   cairo_save(cr_);
   cairo_translate(cr_, kMargin, y_);
@@ -251,14 +255,7 @@ void PageLayout::image(const std::string& png, double width, const std::string& 
   cairo_restore(cr_);
   cairo_surface_destroy(img);
   y_ += h * scale + 4;
-  for (const auto& line : caption_lines) {
-    set_font(8, false);
-    cairo_set_source_rgb(cr_, 0.3, 0.3, 0.3);
-    cairo_move_to(cr_, kMargin, y_ + 8);
-    cairo_show_text(cr_, line.c_str());
-    y_ += line_height(8);
-  }
-  y_ += 10;
+  caption(caption_lines);
 }
 
 }  // namespace feedflow

@@ -40,6 +40,7 @@ class PageLayout {
 
  private:
   void ensure(double height);
+  void caption(const std::vector<std::string>& lines);  // small grey lines under a figure
   void start_page();
   void end_page();
   std::vector<std::string> wrap(const std::string& text, double width, double size, bool bold);
