@@ -6,11 +6,11 @@
 namespace feedflow {
 namespace {
 
-// Monotonized central limiter (van Leer 1977) of the two one-sided differences.
-double monotonized_central(double a, double b) {
+// Van Leer's harmonic limiter of the two one-sided differences: smooth away from extrema,
+// |slope| <= 2 min(|a|, |b|) (TVD, so face values stay between the neighbours').
+double van_leer(double a, double b) {
   if (a * b <= 0.0) return 0.0;
-  const double m = std::min({2.0 * std::abs(a), 2.0 * std::abs(b), 0.5 * std::abs(a + b)});
-  return std::copysign(m, a);
+  return 2.0 * a * b / (a + b);
 }
 
 double minmod(double a, double b) {
@@ -53,8 +53,8 @@ void RampReconstruction::build(const RampPhysics& physics, double bed_step, cons
     const Neighbour l = left_of(i), r = right_of(i);
     const double dh_l = h[i] - l.h, dh_r = r.h - h[i];
     // surface differences: eta_i - eta_(i-1) = dh + (z_i - z_(i-1))
-    const double deta = monotonized_central(dh_l + l.bed_step, dh_r + r.bed_step);
-    const double du = monotonized_central(u[i] - l.u, r.u - u[i]);
+    const double deta = van_leer(dh_l + l.bed_step, dh_r + r.bed_step);
+    const double du = van_leer(u[i] - l.u, r.u - u[i]);
     u_left[i] = u[i] - 0.5 * du;
     u_right[i] = u[i] + 0.5 * du;
     // h on the exact bed: h_R = eta_R - z_R = h_i + (deta - bed_step)/2

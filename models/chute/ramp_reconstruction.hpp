@@ -3,8 +3,8 @@
 // (ramp_flow_scheme.hpp). Per cell it gives the thickness and velocity on its two faces and the
 // bed level there, as an offset from the exact linear bed z = -x tan(theta)/k of the slope.
 //
-// - Free surface eta = h + z and velocity u are reconstructed with the monotonized-central
-//   limiter; the thickness follows as h = eta - z on the exact bed. On a ramp eta is monotone
+// - Free surface eta = h + z and velocity u are reconstructed with van Leer's harmonic limiter;
+//   the thickness follows as h = eta - z on the exact bed. On a ramp eta is monotone
 //   wherever |h_x| < tan(theta)/k, so the limiter stays inactive at smooth extrema of h, the
 //   bed offsets are zero and the centred slope source g sin(theta) h_i dx is exact: the slope
 //   drive has no O(dx) deficit (the first-order hydrostatic reconstruction under-drives by
