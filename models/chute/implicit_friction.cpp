@@ -12,6 +12,13 @@ double ImplicitFriction::at_rest(double h) const {
   return span_ == 0.0 ? tan1_ : tan1_ + span_ / (h / law_.length + 1.0);
 }
 
+double ImplicitFriction::coefficient(double h, double froude) const {
+  if (span_ == 0.0) return tan1_;
+  const double fr = froude + law_.gamma;
+  if (fr <= law_.beta) return at_rest(h);
+  return tan1_ + span_ * law_.length * fr / (law_.beta * h + law_.length * fr);
+}
+
 double ImplicitFriction::speed_after(double h, double u_star, double k) const {
   if (span_ == 0.0) return std::max(0.0, u_star - k * tan1_);  // Coulomb: constant mu
   const double c = std::sqrt(kGravity * h);

@@ -19,6 +19,8 @@ class ImplicitFriction {
   explicit ImplicitFriction(const PouliquenLaw& law);
   // mu_stop(h), as basal_friction_at_rest.
   double at_rest(double thickness) const;
+  // mu(h, Fr), as basal_friction.
+  double coefficient(double thickness, double froude) const;
   // thickness h > 0 [m], explicit_speed u* >= 0 [m/s], impulse_per_mu = dt g cos(theta) [m/s]:
   // the speed after the stopping step [m/s].
   double speed_after(double thickness, double explicit_speed, double impulse_per_mu) const;

@@ -13,6 +13,7 @@ RampFlowScheme::RampFlowScheme(RampGrid grid, RampPhysics physics)
       physics_(physics),
       friction_(physics.friction),
       rest_(grid.cells, 1),
+      friction_start_(grid.cells, 0.0),
       u_(grid.cells, 0.0) {
   if (grid_.cells < 2 || !(grid_.x_end > grid_.x_begin))
     throw std::invalid_argument("ramp flow: need at least 2 cells on a domain of positive length");
@@ -39,7 +40,17 @@ RampFlowScheme::RampFlowScheme(RampGrid grid, RampPhysics physics)
 }
 
 void RampFlowScheme::begin_step(const double* state) {
-  for (std::size_t i = 0; i < grid_.cells; ++i) rest_[i] = state[grid_.cells + i] == 0.0;
+  const std::size_t n = grid_.cells;
+  const double g_cos = kGravity * std::cos(physics_.angle);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double h = state[i], q = state[n + i];
+    rest_[i] = q == 0.0;
+    friction_start_[i] = 0.0;
+    if (q != 0.0 && h > physics_.dry_thickness) {
+      const double froude = std::abs(q) / (h * std::sqrt(kGravity * h));
+      friction_start_[i] = std::copysign(friction_.coefficient(h, froude) * g_cos * h, q);
+    }
+  }
 }
 
 double RampFlowScheme::velocity(double h, double q) const {
@@ -159,6 +170,26 @@ void RampFlowScheme::apply_friction(double* y, double dt) const {
       continue;
     }
     const double speed = friction_.speed_after(h, std::abs(q) / h, impulse_per_mu);
+    q = speed == 0.0 ? 0.0 : std::copysign(speed * h, q);
+  }
+}
+
+void RampFlowScheme::end_step(double* y, double dt) const {
+  const std::size_t n = grid_.cells;
+  const double impulse_per_mu = dt * kGravity * std::cos(physics_.angle);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double h = y[i];
+    double& q = y[n + i];
+    if (h <= physics_.dry_thickness) {
+      q = 0.0;
+      continue;
+    }
+    double k = impulse_per_mu;
+    if (!rest_[i]) {
+      q -= 0.5 * dt * friction_start_[i];
+      k *= 0.5;
+    }
+    const double speed = friction_.speed_after(h, std::abs(q) / h, k);
     q = speed == 0.0 ? 0.0 : std::copysign(speed * h, q);
   }
 }

@@ -21,12 +21,15 @@
 //
 // Friction (the Coulomb threshold) is split so that a layer inside the Coulomb cone stays
 // EXACTLY at rest and a moving one is stopped in finite time:
-// - momentum: the fluxes and sources above carry no friction; after every Runge-Kutta stage and
-//   step an implicit stopping step (apply_friction, implicit_friction.hpp) reduces |q| by
+// - momentum: the fluxes and sources above carry no friction; after every Runge-Kutta stage an
+//   implicit stopping step (apply_friction, implicit_friction.hpp) reduces |q| by
 //   dt mu(h, Fr) g cos(theta) h with mu at the NEW speed (backward Euler, so a uniform layer
 //   reaches the flow rule at any dt), and sets it to exactly zero when dt mu_stop(h) g cos h
-//   exceeds it. Inside the cone the explicit update is smaller than that impulse, so q stays
-//   exactly 0. Applied on each stage it is that stage's friction, not a step-level splitting;
+//   exceeds it. At the end of the step (end_step) a cell moving at its start gets the
+//   trapezoidal friction (half the start friction explicitly, the stopping step over dt/2 for
+//   the other half): with the backward-Euler predictor stage this is second order in time. A
+//   cell at rest at the start gets the stopping step over dt: inside the cone the explicit
+//   update is smaller than that impulse on every stage, so q stays exactly 0;
 // - mass: between two cells at rest (q = 0 at the start of the step) the mass flux uses the cell
 //   averages with the friction at rest added as an apparent bed step |dz_f| <= mu_stop(h) dx/k
 //   that balances as much of the surface step as it can (Bouchut's "friction as topography").
@@ -51,12 +54,17 @@ class RampFlowScheme {
   const RampGrid& grid() const { return grid_; }
   const RampPhysics& physics() const { return physics_; }
 
-  // Records which cells are at rest (q == 0) at the start of a step.
+  // Records which cells are at rest (q == 0) at the start of a step and the friction on the
+  // moving ones.
   void begin_step(const double* state);
-  // dy/dt; returns false (and records where) on a non-finite value.
+  // dy/dt without friction; returns false (and records where) on a non-finite value.
   bool rhs(const double* state, double* derivative);
-  // The implicit Coulomb stopping step over a time dt (a stage or a whole step).
+  // The implicit Coulomb stopping step over a time dt (backward Euler; the stages).
   void apply_friction(double* state, double dt) const;
+  // The friction of a whole step of length dt on the frictionless update: trapezoidal on cells
+  // that were moving at its start (second order in time), the stopping step over dt on cells
+  // that were at rest (so that the Coulomb threshold is exact).
+  void end_step(double* state, double dt) const;
   // Bound on the face wave speeds |u| + sqrt(k g cos h) of the reconstruction [m/s].
   double max_wave_speed(const double* state) const;
   double velocity(double h, double q) const;
@@ -77,6 +85,7 @@ class RampFlowScheme {
   double gk_;       // k g cos(theta)
   double dz_;       // bed step per cell, -dx tan(theta)/k
   std::vector<char> rest_;  // cells at rest at the start of the step
+  std::vector<double> friction_start_;  // mu g cos(theta) h sgn(q) at the start [m^2/s^2]
   std::vector<double> u_;   // cell velocities of the current evaluation
   RampReconstruction rec_;
   std::size_t failed_cell_ = 0;

@@ -41,9 +41,9 @@ int rhs_callback(realtype, N_Vector y, N_Vector ydot, void* user) {
 }
 
 // Friction on every Runge-Kutta stage: the stage z_i = y_n + dt sum a_ij f_j spans c_i dt, so
-// its Coulomb stopping step spans the same time. With Heun (c_2 = 1) and the stopping step after
-// the step, this is Heun's method on the momentum with the friction included, not a first-order
-// splitting, and a cell held by friction stays at q == 0 on every stage.
+// its Coulomb stopping step (backward Euler) spans the same time. With Heun (c_2 = 1) that is a
+// first-order predictor, enough for the corrector, whose friction end_step applies
+// trapezoidally; a cell held by friction stays at q == 0 on every stage.
 int stage_friction_callback(realtype t, N_Vector y, void* user) {
   auto* data = static_cast<RhsData*>(user);
   const double span = t - data->step_start;
@@ -168,7 +168,7 @@ RampFlowResult run_ramp_flow(const RampGrid& grid, const RampPhysics& physics,
       if (y[i] < -1e-12 * h_scale)
         throw NumericalFailure("ramp flow: negative thickness " + std::to_string(y[i]) + " m" +
                                at(t_reached, grid.centre(i)) + "; lower the cfl number");
-    scheme.apply_friction(y, t_reached - t);
+    scheme.end_step(y, t_reached - t);
     t = t_reached;
     if (ERKStepReset(in.arkode, t, in.y) != ARK_SUCCESS)
       throw NumericalFailure("ramp flow: ERKStepReset failed" + at(t, grid.x_begin));
