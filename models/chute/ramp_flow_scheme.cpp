@@ -5,10 +5,16 @@
 #include <numbers>
 #include <stdexcept>
 
+
 namespace feedflow {
 
 RampFlowScheme::RampFlowScheme(RampGrid grid, RampPhysics physics)
-    : grid_(grid), physics_(physics), rest_(grid.cells, 1) {
+    : grid_(grid),
+      physics_(physics),
+      friction_(physics.friction),
+      rest_(grid.cells, 1),
+      friction_start_(grid.cells, 0.0),
+      u_(grid.cells, 0.0) {
   if (grid_.cells < 2 || !(grid_.x_end > grid_.x_begin))
     throw std::invalid_argument("ramp flow: need at least 2 cells on a domain of positive length");
   const auto& law = physics_.friction;
@@ -30,29 +36,43 @@ RampFlowScheme::RampFlowScheme(RampGrid grid, RampPhysics physics)
     throw std::invalid_argument("ramp flow: gate opening must be > 0");
   gk_ = physics_.earth_pressure * kGravity * std::cos(physics_.angle);
   dz_ = -grid_.dx() * std::tan(physics_.angle) / physics_.earth_pressure;
+  rec_.resize(grid_.cells);
 }
 
 void RampFlowScheme::begin_step(const double* state) {
-  for (std::size_t i = 0; i < grid_.cells; ++i) rest_[i] = state[grid_.cells + i] == 0.0;
+  const std::size_t n = grid_.cells;
+  const double g_cos = kGravity * std::cos(physics_.angle);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double h = state[i], q = state[n + i];
+    rest_[i] = q == 0.0;
+    friction_start_[i] = 0.0;
+    if (q != 0.0 && h > physics_.dry_thickness) {
+      const double froude = std::abs(q) / (h * std::sqrt(kGravity * h));
+      friction_start_[i] = std::copysign(friction_.coefficient(h, froude) * g_cos * h, q);
+    }
+  }
 }
 
 double RampFlowScheme::velocity(double h, double q) const {
   return h > physics_.dry_thickness ? q / h : 0.0;
 }
 
-RampFlowScheme::Star RampFlowScheme::reconstruct(std::size_t face, double hl, double hr,
-                                                 bool with_friction) const {
-  double dz = dz_;
-  if (with_friction && (hl > physics_.dry_thickness || hr > physics_.dry_thickness)) {
-    const double mu = basal_friction_at_rest(physics_.friction, 0.5 * (hl + hr));
-    const double cap = mu * grid_.dx() / physics_.earth_pressure;
-    dz += std::clamp(-((hr - hl) + dz_), -cap, cap);
-  }
-  Star s{std::max(0.0, hl - std::max(0.0, dz)), std::max(0.0, hr - std::max(0.0, -dz))};
+void RampFlowScheme::cap_at_gate(std::size_t face, Star& s) const {
   if (physics_.gate_face && *physics_.gate_face == face) {
     s.left = std::min(s.left, physics_.gate_opening);
     s.right = std::min(s.right, physics_.gate_opening);
   }
+}
+
+RampFlowScheme::Star RampFlowScheme::resting_pair(std::size_t face, double hl, double hr) const {
+  double dz = dz_;
+  if (hl > physics_.dry_thickness || hr > physics_.dry_thickness) {
+    const double mu = friction_.at_rest(0.5 * (hl + hr));
+    const double cap = mu * grid_.dx() / physics_.earth_pressure;
+    dz += std::clamp(-((hr - hl) + dz_), -cap, cap);
+  }
+  Star s{std::max(0.0, hl - std::max(0.0, dz)), std::max(0.0, hr - std::max(0.0, -dz))};
+  cap_at_gate(face, s);
   return s;
 }
 
@@ -63,25 +83,43 @@ bool RampFlowScheme::rhs(const double* y, double* dy) {
   double* dh = dy;
   double* dq = dy + n;
   std::fill(dy, dy + state_size(), 0.0);
+  for (std::size_t i = 0; i < n; ++i) u_[i] = velocity(h[i], q[i]);
+  rec_.build(physics_, dz_, h, u_.data(), n);
 
-  auto interior = [&](std::size_t l, std::size_t r, std::size_t face) {
-    const double ul = velocity(h[l], q[l]), ur = velocity(h[r], q[r]);
-    // mass: friction at rest included between cells at rest
-    const Star m = reconstruct(face, h[l], h[r], rest_[l] && rest_[r]);
-    const Star s = reconstruct(face, h[l], h[r], false);  // momentum: gravity only
+  // Centred bed source of each cell, k g cos (h_L + h_R)/2 (z_L - z_R) with (h_L + h_R)/2 = h_i:
+  // g sin(theta) h_i dx on the exact bed.
+  for (std::size_t i = 0; i < n; ++i) dq[i] -= gk_ * h[i] * (dz_ + 2.0 * rec_.bed_right[i]);
+
+  // One face between cell l (left state: its right face) and the right state (hr, ur, bed
+  // offset zr); r == n marks the outflow ghost. Returns the mass flux.
+  auto face_flux = [&](std::size_t l, std::size_t r, std::size_t face, double hr, double ur,
+                       double zr, bool resting, double& fq) {
+    const double hl = rec_.h_right[l], ul = rec_.u_right[l], zl = rec_.bed_right[l];
+    const double zs = std::max(zl, zr);
+    Star s{std::max(0.0, hl + zl - zs), std::max(0.0, hr + zr - zs)};
+    cap_at_gate(face, s);
+    // mass between cells at rest: cell averages with the friction at rest as topography
+    const double hr_cell = r < n ? h[r] : h[l];
+    const double ur_cell = r < n ? u_[r] : std::max(0.0, u_[l]);
+    const Star m = resting ? resting_pair(face, h[l], hr_cell) : s;
+    const double uml = resting ? u_[l] : ul, umr = resting ? ur_cell : ur;
     const double a = std::max(std::abs(ul) + std::sqrt(gk_ * std::max(s.left, m.left)),
                               std::abs(ur) + std::sqrt(gk_ * std::max(s.right, m.right)));
-    const double fh = 0.5 * (m.left * ul + m.right * ur) - 0.5 * a * (m.right - m.left);
-    const double fq = 0.5 * (s.left * ul * ul + pressure(s.left) + s.right * ur * ur +
-                             pressure(s.right)) -
-                      0.5 * a * (s.right * ur - s.left * ul);
+    fq = 0.5 * (s.left * ul * ul + pressure(s.left) + s.right * ur * ur + pressure(s.right)) -
+         0.5 * a * (s.right * ur - s.left * ul);
+    dq[l] -= fq + pressure(hl) - pressure(s.left);
+    if (r < n) dq[r] += fq + pressure(hr) - pressure(s.right);
+    return 0.5 * (m.left * uml + m.right * umr) - 0.5 * a * (m.right - m.left);
+  };
+  auto interior = [&](std::size_t l, std::size_t r, std::size_t face) {
+    double fq = 0.0;
+    const double fh = face_flux(l, r, face, rec_.h_left[r], rec_.u_left[r],
+                                -rec_.bed_right[r], rest_[l] && rest_[r], fq);
     dh[l] -= fh;
     dh[r] += fh;
-    dq[l] -= fq + pressure(h[l]) - pressure(s.left);
-    dq[r] += fq + pressure(h[r]) - pressure(s.right);
   };
-  // A closed end: the ghost cell mirrors the velocity and continues the bed; the mass flux is
-  // exactly zero and the momentum flux is that of the mirrored Rusanov problem.
+  // A closed end: the ghost mirrors the cell (same thickness and bed, opposite velocity); the
+  // mass flux is exactly zero and the momentum flux is that of the mirrored Rusanov problem.
   auto wall_flux = [&](double s, double u_outward) {
     const double a = std::abs(u_outward) + std::sqrt(gk_ * s);
     return s * u_outward * u_outward + pressure(s) + a * s * u_outward;
@@ -91,38 +129,24 @@ bool RampFlowScheme::rhs(const double* y, double* dy) {
   if (physics_.upstream == RampBoundary::Periodic) {
     interior(n - 1, 0, n);
   } else {
-    // upstream end (face 0, cell 0 on its right): a closed end
-    const double u0 = velocity(h[0], q[0]);
-    const double s = reconstruct(0, h[0], h[0], false).right;
-    dq[0] += wall_flux(s, -u0) + pressure(h[0]) - pressure(s);
-    // downstream end (face n, cell n - 1 on its left)
+    dq[0] += wall_flux(rec_.h_left[0], -rec_.u_left[0]);
     const std::size_t l = n - 1;
-    const double ul = velocity(h[l], q[l]);
     bool closed = physics_.downstream == RampBoundary::Wall;
     if (!closed) {
-      // Free end: a ghost cell continues the ramp with the last cell's thickness and no
-      // backward velocity, so a layer leaves as if the ramp went on; nothing ever enters.
-      const double ug = std::max(0.0, ul);
-      const Star m = reconstruct(n, h[l], h[l], rest_[l]);
-      const Star s = reconstruct(n, h[l], h[l], false);
-      const double a = std::max(std::abs(ul) + std::sqrt(gk_ * s.left),
-                                ug + std::sqrt(gk_ * std::max(s.right, m.right)));
-      const double fh = 0.5 * (m.left * ul + m.right * ug) - 0.5 * a * (m.right - m.left);
-      const double fq = 0.5 * (s.left * ul * ul + pressure(s.left) + s.right * ug * ug +
-                               pressure(s.right)) -
-                        0.5 * a * (s.right * ug - s.left * ul);
+      // Free end: a ghost continues the ramp with the last cell's thickness and no backward
+      // velocity, so a layer leaves as if the ramp went on; nothing ever enters.
+      const double dq_before = dq[l];
+      double fq = 0.0;
+      const double fh = face_flux(l, n, n, h[l], std::max(0.0, u_[l]), 0.0, rest_[l], fq);
       if (fh >= 0.0) {
         dh[l] -= fh;
-        dq[l] -= fq + pressure(h[l]) - pressure(s.left);
         dy[2 * n] += fh;
       } else {
+        dq[l] = dq_before;
         closed = true;
       }
     }
-    if (closed) {
-      const double s = reconstruct(n, h[l], h[l], false).left;
-      dq[l] -= wall_flux(s, ul) + pressure(h[l]) - pressure(s);
-    }
+    if (closed) dq[l] -= wall_flux(rec_.h_right[l], rec_.u_right[l]);
   }
   const double inv_dx = 1.0 / grid_.dx();
   for (std::size_t i = 0; i < 2 * n; ++i) {
@@ -132,14 +156,12 @@ bool RampFlowScheme::rhs(const double* y, double* dy) {
       return false;
     }
   }
-  // Gravity along the slope for an upstream wall cell comes from the wall face; for an
-  // outflow or periodic end it comes from the interior faces as for every other cell.
   return std::isfinite(dy[2 * n]);
 }
 
 void RampFlowScheme::apply_friction(double* y, double dt) const {
   const std::size_t n = grid_.cells;
-  const double g_cos = kGravity * std::cos(physics_.angle);
+  const double impulse_per_mu = dt * kGravity * std::cos(physics_.angle);
   for (std::size_t i = 0; i < n; ++i) {
     const double h = y[i];
     double& q = y[n + i];
@@ -147,18 +169,39 @@ void RampFlowScheme::apply_friction(double* y, double dt) const {
       q = 0.0;
       continue;
     }
-    const double u = q / h;
-    const double mu = basal_friction(physics_.friction, h, std::abs(u) / std::sqrt(kGravity * h));
-    const double impulse = dt * mu * g_cos * h;
-    q = std::abs(q) <= impulse ? 0.0 : q - std::copysign(impulse, q);
+    const double speed = friction_.speed_after(h, std::abs(q) / h, impulse_per_mu);
+    q = speed == 0.0 ? 0.0 : std::copysign(speed * h, q);
+  }
+}
+
+void RampFlowScheme::end_step(double* y, double dt) const {
+  const std::size_t n = grid_.cells;
+  const double impulse_per_mu = dt * kGravity * std::cos(physics_.angle);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double h = y[i];
+    double& q = y[n + i];
+    if (h <= physics_.dry_thickness) {
+      q = 0.0;
+      continue;
+    }
+    double k = impulse_per_mu;
+    if (!rest_[i]) {
+      q -= 0.5 * dt * friction_start_[i];
+      k *= 0.5;
+    }
+    const double speed = friction_.speed_after(h, std::abs(q) / h, k);
+    q = speed == 0.0 ? 0.0 : std::copysign(speed * h, q);
   }
 }
 
 double RampFlowScheme::max_wave_speed(const double* y) const {
+  // face thicknesses reach at most the largest neighbour plus dx tan(theta)/(2k)
   const std::size_t n = grid_.cells;
+  const double rise = 0.5 * std::abs(dz_);
   double a = 0.0;
   for (std::size_t i = 0; i < n; ++i)
-    a = std::max(a, std::abs(velocity(y[i], y[n + i])) + std::sqrt(gk_ * std::max(0.0, y[i])));
+    a = std::max(a, std::abs(velocity(y[i], y[n + i])) +
+                        std::sqrt(gk_ * (std::max(0.0, y[i]) + rise)));
   return a;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Rung L1 chute model: integrates the ramp-flow scheme (ramp_flow_scheme.hpp) in time with
 // SUNDIALS ARKODE (ERKStep, Heun's SSP Runge-Kutta 2 with its Euler embedding, fixed CFL steps)
-// by the method of lines, applies the implicit Coulomb stopping step after every step, records
+// by the method of lines, applies the implicit Coulomb stopping step after every stage (ERKStep's
+// stage post-processing) and the step's friction after every step, records
 // the front and the velocities, and stops once the kinetic energy has fallen below a fraction of
 // its peak (or the flow is exactly at rest).
 #include <cstddef>
