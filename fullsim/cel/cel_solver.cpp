@@ -82,6 +82,9 @@ CelStepReport CelSolver::step() {
   report.dt = dt;
   assemble_nodal_forces(grid_, active_, options_.forces,
                         gravity_factor(time_) * options_.gravity, cells_, nodes_);
+  if (options_.settling_damping > 0.0)
+    for (std::size_t a = 0; a < grid_.node_count(); ++a)
+      nodes_.force[a] -= options_.settling_damping * nodes_.mass[a] * nodes_.velocity[a];
   report.dropped_momentum = advance_node_velocities(0.5 * (dt_previous_ + dt), void_node_mass_, nodes_);
   const CellUpdateReport cu =
       update_cell_states(grid_, active_, model_, options_.substepping, dt, nodes_, cells_);

@@ -22,6 +22,9 @@ struct CelOptions {
   BoxWalls walls{};
   NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
+  // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic
+  // relaxation [1/s]; 0: off (default). Not physical: a run that uses it says so.
+  double settling_damping = 0.0;
   double min_volume_fraction = 1e-6;   // cells above it (and not solid) are active
   double volume_fraction_cut = 1e-12;  // the remap empties cells below it (mass booked)
   double max_speed = 50.0;             // blow-up guard on nodal speed [m/s]
