@@ -1,0 +1,43 @@
+#pragma once
+// The state of the CEL solver as arrays (data-oriented, one entry per cell or node; models.md
+// 2.2): per cell the material volume fraction, mass, full 3x3 stress, void ratio and a solid flag
+// (cells inside walls); per node the velocity v^{n-1/2}, the lumped mass and the kinematic
+// constraint. Lists of active cells and nodes let void cost nothing.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "fullsim/cel/plane_strain_grid.hpp"
+
+namespace feedflow::cel {
+
+struct CellFields {
+  std::vector<double> volume_fraction;   // material volume / cell volume, in [0, 1] [-]
+  std::vector<double> mass;              // material mass per unit depth [kg/m]
+  std::vector<Eigen::Matrix3d> stress;   // Cauchy stress, tension positive [Pa]
+  std::vector<double> void_ratio;        // [-]
+  std::vector<std::uint8_t> solid;       // 1: inside a wall (no material, no transport)
+  // Per step, written by the phases:
+  std::vector<double> wave_speed;        // c_d bound of the last time-step pass [m/s]
+  std::vector<double> volume_rate;       // tr D of the last Lagrangian phase [1/s]
+  std::vector<NodeVector> corner_force;  // kNodesPerCell forces per cell [N/m]
+
+  void resize(std::size_t cells);
+  double density(std::size_t c, double cell_volume) const {  // rho = M / (vf V) [kg/m^3]
+    return volume_fraction[c] > 0.0 ? mass[c] / (volume_fraction[c] * cell_volume) : 0.0;
+  }
+};
+
+// Kinematic constraint of a node: which velocity components are prescribed (to zero).
+enum class NodeConstraint : std::uint8_t { free = 0, fixed_x = 1, fixed_y = 2, fixed = 3 };
+
+struct NodeFields {
+  std::vector<NodeVector> velocity;      // v^{n-1/2} [m/s]
+  std::vector<double> mass;              // lumped [kg/m]
+  std::vector<NodeVector> force;         // f_ext - f_int of the current step [N/m]
+  std::vector<std::uint8_t> constraint;  // NodeConstraint bits
+
+  void resize(std::size_t nodes);
+};
+
+}  // namespace feedflow::cel

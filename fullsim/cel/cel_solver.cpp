@@ -1,0 +1,162 @@
+#include "fullsim/cel/cel_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "fullsim/cel/lagrangian_phase.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow::cel {
+
+CelSolver::CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model,
+                     const CelOptions& options)
+    : grid_(grid), model_(model), options_(options), remap_(options.volume_fraction_cut) {
+  cells_.resize(grid_.cell_count());
+  nodes_.resize(grid_.node_count());
+  refresh_nodes();
+}
+
+void CelSolver::add_material(const MaterialBlock& b) {
+  const double h = grid_.cell_size;
+  for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
+    if (cells_.solid[c]) continue;
+    const Eigen::Vector2d lo = grid_.cell_centre(c).array() - 0.5 * h;
+    const double wx = std::max(0.0, std::min(lo.x() + h, b.upper.x()) - std::max(lo.x(), b.lower.x()));
+    const double wy = std::max(0.0, std::min(lo.y() + h, b.upper.y()) - std::max(lo.y(), b.lower.y()));
+    const double add = std::min(wx * wy / (h * h), 1.0 - cells_.volume_fraction[c]);
+    if (add <= 0.0) continue;
+    const double m_add = add * grid_.cell_volume() * b.bulk_density;
+    const double m_old = cells_.mass[c], vf_old = cells_.volume_fraction[c];
+    cells_.stress[c] = (cells_.stress[c] * vf_old + b.stress * add) / (vf_old + add);
+    cells_.void_ratio[c] = (cells_.void_ratio[c] * m_old + b.void_ratio * m_add) / (m_old + m_add);
+    cells_.mass[c] = m_old + m_add;
+    cells_.volume_fraction[c] = vf_old + add;
+  }
+  void_node_mass_ = std::max(void_node_mass_, kVoidNodeMassFraction * 0.25 * grid_.cell_volume() *
+                                                  b.bulk_density);
+  refresh_nodes();
+}
+
+void CelSolver::set_solid(std::size_t c) {
+  cells_.solid[c] = 1;
+  cells_.volume_fraction[c] = 0.0;
+  cells_.mass[c] = 0.0;
+  cells_.stress[c].setZero();
+  cells_.void_ratio[c] = 0.0;
+  refresh_nodes();
+}
+
+void CelSolver::set_velocity(const NodeVector& v) {
+  for (std::size_t a = 0; a < grid_.node_count(); ++a)
+    nodes_.velocity[a] = nodes_.mass[a] > void_node_mass_ ? v : NodeVector::Zero();
+  apply_node_constraints(nodes_);
+}
+
+void CelSolver::refresh_nodes() {
+  assign_node_constraints(grid_, options_.walls, cells_, nodes_);
+  lump_nodal_mass(grid_, cells_, nodes_);
+}
+
+void CelSolver::refresh_active_cells() {
+  active_.clear();
+  for (std::size_t c = 0; c < grid_.cell_count(); ++c)
+    if (!cells_.solid[c] && cells_.mass[c] > 0.0 &&
+        cells_.volume_fraction[c] > options_.min_volume_fraction)
+      active_.push_back(c);
+}
+
+double CelSolver::gravity_factor(double t) const {
+  const double ramp = options_.gravity_ramp_time;
+  if (ramp <= 0.0 || t >= ramp) return 1.0;
+  const double s = t / ramp;
+  return s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);  // smooth step (Abaqus SMOOTH STEP)
+}
+
+CelStepReport CelSolver::step() {
+  CelStepReport report;
+  refresh_active_cells();
+  report.time_step = stable_time_step(grid_, active_, model_, options_.time_step, options_.forces,
+                                      nodes_, cells_);
+  const double dt = report.time_step.dt;
+  report.dt = dt;
+  assemble_nodal_forces(grid_, active_, options_.forces,
+                        gravity_factor(time_) * options_.gravity, cells_, nodes_);
+  if (options_.settling_damping > 0.0)
+    for (std::size_t a = 0; a < grid_.node_count(); ++a)
+      nodes_.force[a] -= options_.settling_damping * nodes_.mass[a] * nodes_.velocity[a];
+  report.dropped_momentum = advance_node_velocities(0.5 * (dt_previous_ + dt), void_node_mass_, nodes_);
+  const CellUpdateReport cu =
+      update_cell_states(grid_, active_, model_, options_.substepping, dt, nodes_, cells_);
+  report.most_substeps = cu.most_substeps;
+  report.unconverged_cells = cu.unconverged_cells;
+  report.remap = remap_.remap(grid_, dt, steps_ % 2 == 0, void_node_mass_, cells_, nodes_);
+  removed_mass_ += report.remap.removed_mass;
+  cell_updates_ += static_cast<long>(active_.size());
+  time_ += dt;
+  dt_previous_ = dt;
+  ++steps_;
+  guard(report);
+  return report;
+}
+
+void CelSolver::run_until(double t_end) {
+  while (time_ < t_end) step();
+}
+
+void CelSolver::guard(const CelStepReport& report) const {
+  const auto fail = [&](std::size_t c, const std::string& what) {
+    std::ostringstream s;
+    s << "CEL blow-up at step " << steps_ << ", t = " << time_ << " s, cell (" << grid_.cell_i(c)
+      << ", " << grid_.cell_j(c) << "): " << what << "; the step was " << report.dt
+      << " s, try a time step below " << 0.5 * report.dt << " s (time_step.safety "
+      << 0.5 * options_.time_step.safety << ")";
+    throw NumericalFailure(s.str());
+  };
+  if (report.remap.max_outflow_fraction > 1.0)
+    fail(report.time_step.limiting_cell, "a remap flux exceeds its donor cell (Courant > 1)");
+  for (std::size_t c : active_) {
+    if (!cells_.stress[c].allFinite() || !std::isfinite(cells_.void_ratio[c]) ||
+        !std::isfinite(cells_.mass[c]))
+      fail(c, "non-finite stress, void ratio or mass");
+    for (std::size_t a : grid_.cell_nodes(c)) {
+      const double v = nodes_.velocity[a].norm();
+      if (!std::isfinite(v) || v > options_.max_speed) {
+        std::ostringstream w;
+        w << "node speed " << v << " m/s beyond the bound " << options_.max_speed << " m/s";
+        fail(c, w.str());
+      }
+    }
+  }
+}
+
+double CelSolver::total_mass() const {
+  double m = 0.0;
+  for (double x : cells_.mass) m += x;
+  return m;
+}
+
+NodeVector CelSolver::total_momentum() const {
+  NodeVector p = NodeVector::Zero();
+  for (std::size_t a = 0; a < grid_.node_count(); ++a) p += nodes_.mass[a] * nodes_.velocity[a];
+  return p;
+}
+
+double CelSolver::kinetic_energy() const {
+  double k = 0.0;
+  for (std::size_t a = 0; a < grid_.node_count(); ++a)
+    k += 0.5 * nodes_.mass[a] * nodes_.velocity[a].squaredNorm();
+  return k;
+}
+
+NodeVector CelSolver::centre_of_mass() const {
+  NodeVector s = NodeVector::Zero();
+  double m = 0.0;
+  for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
+    s += cells_.mass[c] * grid_.cell_centre(c);
+    m += cells_.mass[c];
+  }
+  return m > 0.0 ? NodeVector(s / m) : s;
+}
+
+}  // namespace feedflow::cel

@@ -1,0 +1,103 @@
+#pragma once
+// The plane-strain CEL solver: one step is the time-step pass (per-cell wave-speed bound), the
+// Lagrangian phase (forces, central-difference velocities, hypoplastic update per active cell)
+// and the donor-cell remap back to the fixed grid, followed by the blow-up guard
+// (models.md 2.2-2.5, 5.2). Gravity may be ramped by a smooth step, as the seed deck did.
+#include <cstddef>
+#include <vector>
+
+#include "fullsim/cel/box_walls.hpp"
+#include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/donor_cell_remap.hpp"
+#include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/stable_time_step.hpp"
+#include "models/hypoplastic/material_point_integrator.hpp"
+
+namespace feedflow::cel {
+
+struct CelOptions {
+  ForceOptions forces{};
+  TimeStepOptions time_step{};
+  SubsteppingOptions substepping{};
+  BoxWalls walls{};
+  NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
+  double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
+  // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic
+  // relaxation [1/s]; 0: off (default). Not physical: a run that uses it says so.
+  double settling_damping = 0.0;
+  double min_volume_fraction = 1e-6;   // cells above it (and not solid) are active
+  double volume_fraction_cut = 1e-12;  // the remap empties cells below it (mass booked)
+  double max_speed = 50.0;             // blow-up guard on nodal speed [m/s]
+};
+
+// A rectangle of material: bulk density, void ratio and an initial stress (tension positive).
+struct MaterialBlock {
+  Eigen::Vector2d lower = Eigen::Vector2d::Zero();  // [m]
+  Eigen::Vector2d upper = Eigen::Vector2d::Zero();  // [m]
+  double bulk_density = 0.0;                         // [kg/m^3]
+  double void_ratio = 0.0;                           // [-]
+  Eigen::Matrix3d stress = -10.0 * Eigen::Matrix3d::Identity();  // seed deck: -10 Pa I
+};
+
+struct CelStepReport {
+  double dt = 0.0;
+  TimeStepChoice time_step{};
+  int most_substeps = 0;
+  int unconverged_cells = 0;
+  RemapReport remap{};
+  NodeVector dropped_momentum = NodeVector::Zero();  // on void nodes in the Lagrangian phase
+};
+
+class CelSolver {
+ public:
+  CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model, const CelOptions& options);
+
+  // Adds material to the cells the block overlaps (volume fraction = overlapped area share).
+  void add_material(const MaterialBlock& block);
+  void set_solid(std::size_t cell);
+  // Gives every node that carries mass the velocity v.
+  void set_velocity(const NodeVector& v);
+
+  // One step; throws NumericalFailure (naming step, time, cell and a safer dt) on blow-up.
+  CelStepReport step();
+  // Steps until time t_end (the last step is not shortened).
+  void run_until(double t_end);
+
+  const PlaneStrainGrid& grid() const { return grid_; }
+  const CellFields& cells() const { return cells_; }
+  const NodeFields& nodes() const { return nodes_; }
+  const std::vector<std::size_t>& active_cells() const { return active_; }
+  const CelOptions& options() const { return options_; }
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  double last_dt() const { return dt_previous_; }
+  long cell_updates() const { return cell_updates_; }
+
+  double total_mass() const;          // [kg/m]
+  NodeVector total_momentum() const;  // nodal [kg m/s /m]
+  double kinetic_energy() const;      // nodal [J/m]
+  double removed_mass() const { return removed_mass_; }
+  NodeVector centre_of_mass() const;  // [m]
+
+ private:
+  void refresh_active_cells();
+  void refresh_nodes();
+  double gravity_factor(double t) const;
+  void guard(const CelStepReport& report) const;
+
+  PlaneStrainGrid grid_;
+  HypoplasticModel model_;
+  CelOptions options_;
+  CellFields cells_;
+  NodeFields nodes_;
+  DonorCellRemap remap_;
+  std::vector<std::size_t> active_;
+  double void_node_mass_ = 0.0;
+  double time_ = 0.0;
+  double dt_previous_ = 0.0;
+  long steps_ = 0;
+  long cell_updates_ = 0;
+  double removed_mass_ = 0.0;
+};
+
+}  // namespace feedflow::cel

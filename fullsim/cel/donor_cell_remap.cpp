@@ -1,0 +1,200 @@
+#include "fullsim/cel/donor_cell_remap.hpp"
+
+#include <algorithm>
+
+#include "fullsim/cel/box_walls.hpp"
+#include "fullsim/cel/nodal_forces.hpp"
+
+namespace feedflow::cel {
+namespace {
+
+// A face normal to `axis` (0: x, 1: y) between cell `lo` and cell `hi` (the next one along the
+// axis): its two nodes and the two cells. `along` counts node lines along the axis (1..n-1),
+// `across` the cell line.
+struct Face {
+  std::size_t lo, hi, node_a, node_b;
+};
+
+Face face(const PlaneStrainGrid& g, int axis, int along, int across) {
+  if (axis == 0)
+    return {g.cell(along - 1, across), g.cell(along, across), g.node(along, across),
+            g.node(along, across + 1)};
+  return {g.cell(across, along - 1), g.cell(across, along), g.node(across, along),
+          g.node(across + 1, along)};
+}
+
+std::size_t node_on_line(const PlaneStrainGrid& g, int axis, int along, int across) {
+  return axis == 0 ? g.node(along, across) : g.node(across, along);
+}
+
+// Transport volume through a face, positive towards `hi` [m^3/m].
+double transport_volume(const PlaneStrainGrid& g, const NodeFields& nodes, const Face& f, int axis,
+                        double dt, const CellFields& cells) {
+  if (cells.solid[f.lo] || cells.solid[f.hi]) return 0.0;
+  return dt * g.face_area() * 0.5 * (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
+}
+
+template <class T>
+void zero(std::vector<T>& v, const T& z) {
+  std::fill(v.begin(), v.end(), z);
+}
+
+}  // namespace
+
+void DonorCellRemap::Contents::resize(std::size_t n) {
+  volume.assign(n, 0.0);
+  material_volume.assign(n, 0.0);
+  mass.assign(n, 0.0);
+  void_mass.assign(n, 0.0);
+  stress_volume.assign(n, Eigen::Matrix3d::Zero());
+}
+
+double DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis, const CellFields& cells,
+                             const NodeFields& nodes) {
+  const int n_along = axis == 0 ? g.nx : g.ny;
+  const int n_across = axis == 0 ? g.ny : g.nx;
+  zero(delta_.volume, 0.0);
+  zero(delta_.material_volume, 0.0);
+  zero(delta_.mass, 0.0);
+  zero(delta_.void_mass, 0.0);
+  zero(delta_.stress_volume, Eigen::Matrix3d::Zero().eval());
+  face_mass_flux_.assign(static_cast<std::size_t>(n_across) * (n_along + 1), 0.0);
+  double worst = 0.0;
+  // Lines across the sweep direction are independent: each touches its own cells only.
+#pragma omp parallel for schedule(static) reduction(max : worst) if (g.cell_count() > 8192)
+  for (int m = 0; m < n_across; ++m) {
+    for (int k = 1; k < n_along; ++k) {
+      const Face f = face(g, axis, k, m);
+      const double dv = transport_volume(g, nodes, f, axis, dt, cells);
+      if (dv == 0.0) continue;
+      const std::size_t donor = dv > 0.0 ? f.lo : f.hi;
+      const double share = std::abs(dv) / now_.volume[donor];
+      worst = std::max(worst, share);
+      const double moved = dv > 0.0 ? share : -share;  // signed share, lo -> hi positive
+      const auto move = [&](auto& d, const auto& src) {
+        const auto flux = moved * src[donor];
+        d[f.lo] -= flux;
+        d[f.hi] += flux;
+      };
+      delta_.volume[f.lo] -= dv;
+      delta_.volume[f.hi] += dv;
+      move(delta_.material_volume, now_.material_volume);
+      move(delta_.mass, now_.mass);
+      move(delta_.void_mass, now_.void_mass);
+      move(delta_.stress_volume, now_.stress_volume);
+      face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k] = moved * now_.mass[donor];
+    }
+  }
+  const std::size_t n = g.cell_count();
+  for (std::size_t c = 0; c < n; ++c) {
+    now_.volume[c] += delta_.volume[c];
+    now_.material_volume[c] += delta_.material_volume[c];
+    now_.mass[c] += delta_.mass[c];
+    now_.void_mass[c] += delta_.void_mass[c];
+    now_.stress_volume[c] += delta_.stress_volume[c];
+  }
+  return worst;
+}
+
+void DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
+  const int n_along = axis == 0 ? g.nx : g.ny;    // cells along the axis
+  const int n_across = axis == 0 ? g.ny : g.nx;   // cell lines
+  zero(node_mass_delta_, 0.0);
+  zero(node_momentum_delta_, NodeVector::Zero().eval());
+  const auto flux = [&](int m, int k) {
+    return face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k];
+  };
+  // Node line `line` (0..n_across) takes half of cell lines line-1 and line; the dual face at the
+  // centre of cell k carries half the sum of cell k's two primal face fluxes.
+#pragma omp parallel for schedule(static) if (g.cell_count() > 8192)
+  for (int line = 0; line <= n_across; ++line) {
+    for (int k = 0; k < n_along; ++k) {
+      double phi = 0.0;
+      for (int m = line - 1; m <= line; ++m)
+        if (m >= 0 && m < n_across) phi += 0.25 * (flux(m, k) + flux(m, k + 1));
+      if (phi == 0.0) continue;
+      const std::size_t lo = node_on_line(g, axis, k, line), hi = node_on_line(g, axis, k + 1, line);
+      const std::size_t donor = phi > 0.0 ? lo : hi;
+      const NodeVector v = node_mass_[donor] > 0.0 ? NodeVector(node_momentum_[donor] / node_mass_[donor])
+                                                   : NodeVector::Zero();
+      node_mass_delta_[lo] -= phi;
+      node_mass_delta_[hi] += phi;
+      node_momentum_delta_[lo] -= phi * v;
+      node_momentum_delta_[hi] += phi * v;
+    }
+  }
+  for (std::size_t a = 0; a < g.node_count(); ++a) {
+    node_mass_[a] += node_mass_delta_[a];
+    node_momentum_[a] += node_momentum_delta_[a];
+  }
+}
+
+RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, double dt, bool x_first,
+                                  double void_node_mass, CellFields& cells, NodeFields& nodes) {
+  const std::size_t n = g.cell_count();
+  now_.resize(n);
+  delta_.resize(n);
+  const double v0 = g.cell_volume();
+  // The Lagrangian cell: V^L = V + the outward transport volumes of its interior faces.
+  for (std::size_t c = 0; c < n; ++c) now_.volume[c] = v0;
+  for (int axis = 0; axis < kDimension; ++axis) {
+    const int n_along = axis == 0 ? g.nx : g.ny, n_across = axis == 0 ? g.ny : g.nx;
+    for (int m = 0; m < n_across; ++m)
+      for (int k = 1; k < n_along; ++k) {
+        const Face f = face(g, axis, k, m);
+        const double dv = transport_volume(g, nodes, f, axis, dt, cells);
+        now_.volume[f.lo] += dv;
+        now_.volume[f.hi] -= dv;
+      }
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    now_.material_volume[c] = cells.volume_fraction[c] * now_.volume[c];
+    now_.mass[c] = cells.mass[c];
+    now_.void_mass[c] = cells.void_ratio[c] * cells.mass[c];
+    now_.stress_volume[c] = cells.stress[c] * now_.material_volume[c];
+  }
+  const std::size_t nn = g.node_count();
+  node_mass_.assign(nodes.mass.begin(), nodes.mass.end());
+  node_momentum_.resize(nn);
+  node_mass_delta_.resize(nn);
+  node_momentum_delta_.resize(nn);
+  for (std::size_t a = 0; a < nn; ++a) node_momentum_[a] = nodes.mass[a] * nodes.velocity[a];
+
+  RemapReport report;
+  const int first = x_first ? 0 : 1;
+  for (int axis : {first, 1 - first}) {
+    report.max_outflow_fraction = std::max(report.max_outflow_fraction, sweep(g, dt, axis, cells, nodes));
+    sweep_momentum(g, axis);
+  }
+
+  for (std::size_t c = 0; c < n; ++c) {
+    const double vm = now_.material_volume[c];
+    const double vf = vm / v0;
+    if (vf < cut_ || now_.mass[c] <= 0.0) {
+      report.removed_mass += now_.mass[c];
+      cells.volume_fraction[c] = 0.0;
+      cells.mass[c] = 0.0;
+      cells.stress[c].setZero();
+      cells.void_ratio[c] = 0.0;
+      continue;
+    }
+    cells.volume_fraction[c] = std::min(vf, 1.0);  // overfilled: keep the mass, raise rho
+    cells.mass[c] = now_.mass[c];
+    cells.stress[c] = now_.stress_volume[c] / vm;
+    cells.void_ratio[c] = now_.void_mass[c] / now_.mass[c];
+  }
+
+  lump_nodal_mass(g, cells, nodes);
+  for (std::size_t a = 0; a < nn; ++a) {
+    if (nodes.mass[a] > void_node_mass && node_mass_[a] > 0.0) {
+      nodes.velocity[a] = node_momentum_[a] / node_mass_[a];
+    } else {
+      report.lost_momentum += node_momentum_[a];
+      nodes.velocity[a].setZero();
+    }
+  }
+  apply_node_constraints(nodes);
+  return report;
+}
+
+}  // namespace feedflow::cel

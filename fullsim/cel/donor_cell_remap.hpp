@@ -1,0 +1,56 @@
+#pragma once
+// The remap phase, first version (models.md 2.4): after the Lagrangian phase the cell contents
+// (material volume vf V^L, mass, stress x material volume, void ratio x mass, cell momentum) are
+// transported back to the fixed grid by first-order donor-cell fluxes, split into an x and a y
+// sweep whose order alternates every step. A face's transport volume is dt h times the mean
+// normal velocity of its two nodes; the donor (upwind) cell gives that fraction of its current
+// (intermediate) volume of every content. Every flux leaves one cell and enters its neighbour,
+// so mass, material volume and cell momentum are conserved to round-off; the box faces and the
+// faces of solid cells carry no flux.
+//
+// Momentum: half-index shift (Benson 1992). Nodes are the cells of the dual grid; the mass flux
+// through a dual face (at a cell centre) is half the sum of that cell's two primal face fluxes,
+// shared by the two dual lines the cell touches, so the advected nodal mass equals the mass lumped
+// from the remapped cells. Nodal momentum moves with these fluxes at the donor node's velocity
+// (donor cell): conservative, and the new velocity is a convex combination of old ones (no
+// overshoot at nodes that lose most of their mass).
+#include <vector>
+
+#include "fullsim/cel/cel_fields.hpp"
+
+namespace feedflow::cel {
+
+struct RemapReport {
+  double max_outflow_fraction = 0.0;  // largest share of a donor's volume given in one sweep
+  double removed_mass = 0.0;          // in cells that fell below the volume-fraction cut [kg/m]
+  NodeVector lost_momentum = NodeVector::Zero();  // on nodes that became void [kg m/s /m]
+};
+
+class DonorCellRemap {
+ public:
+  // Cells whose volume fraction falls below `volume_fraction_cut` are emptied (mass booked).
+  explicit DonorCellRemap(double volume_fraction_cut = 1e-12) : cut_(volume_fraction_cut) {}
+
+  // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
+  // constraints applied.
+  RemapReport remap(const PlaneStrainGrid& grid, double dt, bool x_first, double void_node_mass,
+                    CellFields& cells, NodeFields& nodes);
+
+ private:
+  struct Contents {
+    std::vector<double> volume, material_volume, mass, void_mass;
+    std::vector<Eigen::Matrix3d> stress_volume;
+    void resize(std::size_t n);
+  };
+  double sweep(const PlaneStrainGrid& grid, double dt, int axis, const CellFields& cells,
+               const NodeFields& nodes);
+  void sweep_momentum(const PlaneStrainGrid& grid, int axis);
+
+  double cut_;
+  Contents now_, delta_;
+  std::vector<double> face_mass_flux_;  // of the last sweep, per line (n_along + 1 faces) [kg/m]
+  std::vector<double> node_mass_, node_mass_delta_;
+  std::vector<NodeVector> node_momentum_, node_momentum_delta_;
+};
+
+}  // namespace feedflow::cel

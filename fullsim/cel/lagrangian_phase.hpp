@@ -1,0 +1,32 @@
+#pragma once
+// The Lagrangian phase after the forces (models.md 2.3 items 5-7): the central-difference
+// velocity update v^{n+1/2} = v^{n-1/2} + (dt^{n+1} + dt^n)/2 a^n with the kinematic constraints
+// (nodes without mass keep no velocity), then per active cell the velocity gradient, the
+// hypoplastic integrator over dt^{n+1} and tr D for the remap. Mixed cells take the cell's strain
+// rate (equal-strain-rate rule: the volume fraction of the Lagrangian cell is unchanged).
+#include <cstddef>
+#include <vector>
+
+#include "fullsim/cel/cel_fields.hpp"
+#include "models/hypoplastic/material_point_integrator.hpp"
+
+namespace feedflow::cel {
+
+// Nodes lighter than this fraction of a full cell's quarter mass are void (velocity zero).
+inline constexpr double kVoidNodeMassFraction = 1e-6;
+
+// Returns the momentum dropped on void nodes (their m v + dt f) [kg m/s /m].
+NodeVector advance_node_velocities(double average_dt, double void_node_mass, NodeFields& nodes);
+
+struct CellUpdateReport {
+  int most_substeps = 0;
+  int unconverged_cells = 0;
+};
+
+CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
+                                    const std::vector<std::size_t>& active_cells,
+                                    const HypoplasticModel& model,
+                                    const SubsteppingOptions& substepping, double dt,
+                                    const NodeFields& nodes, CellFields& cells);
+
+}  // namespace feedflow::cel

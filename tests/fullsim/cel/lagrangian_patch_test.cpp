@@ -1,0 +1,81 @@
+// The Lagrangian phase on its own: patch tests of the one-point quadrilateral (models.md 2.3).
+#include <gtest/gtest.h>
+
+#include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/quad_cell.hpp"
+
+namespace feedflow::cel {
+namespace {
+
+struct Patch {
+  PlaneStrainGrid grid = make_plane_strain_grid(5, 4, 0.02);
+  CellFields cells;
+  NodeFields nodes;
+  std::vector<std::size_t> active;
+  Patch() {
+    cells.resize(grid.cell_count());
+    nodes.resize(grid.node_count());
+    for (std::size_t c = 0; c < grid.cell_count(); ++c) {
+      cells.volume_fraction[c] = 1.0;
+      cells.mass[c] = 300.0 * grid.cell_volume();
+      cells.wave_speed[c] = 40.0;
+      active.push_back(c);
+    }
+    lump_nodal_mass(grid, cells, nodes);
+  }
+};
+
+// A linear velocity field v = A x + b gives L = A in every element and no hourglass force.
+TEST(CelLagrangianPatch, LinearVelocityUniformStrainRateNoHourglass) {
+  Patch p;
+  Eigen::Matrix2d a;
+  a << 0.3, -1.1, 0.7, -0.4;
+  const NodeVector b(0.5, -0.2);
+  for (std::size_t n = 0; n < p.grid.node_count(); ++n)
+    p.nodes.velocity[n] = a * p.grid.node_position(n) + b;
+  for (std::size_t c : p.active) {
+    CellVelocities v;
+    const auto ids = p.grid.cell_nodes(c);
+    for (int k = 0; k < kNodesPerCell; ++k) v[k] = p.nodes.velocity[ids[k]];
+    EXPECT_LT((velocity_gradient(v, p.grid.cell_size).topLeftCorner<2, 2>() - a).norm(), 1e-12);
+    EXPECT_LT(hourglass_velocity(v).norm(), 1e-12);
+  }
+  // Zero stress and no volume change: the assembled forces are hourglass forces only -> zero.
+  ForceOptions o;
+  o.linear_bulk_viscosity = 0.0;
+  o.quadratic_bulk_viscosity = 0.0;
+  assemble_nodal_forces(p.grid, p.active, o, NodeVector::Zero(), p.cells, p.nodes);
+  for (const NodeVector& f : p.nodes.force) EXPECT_LT(f.norm(), 1e-12);
+}
+
+// The hourglass mode itself is resisted (the control acts), and opposes the motion.
+TEST(CelLagrangianPatch, HourglassModeIsResisted) {
+  Patch p;
+  for (std::size_t n = 0; n < p.grid.node_count(); ++n) {
+    const double s = ((p.grid.node_i(n) + p.grid.node_j(n)) % 2 == 0) ? 1.0 : -1.0;
+    p.nodes.velocity[n] = NodeVector(0.01 * s, 0.0);
+  }
+  assemble_nodal_forces(p.grid, p.active, ForceOptions{}, NodeVector::Zero(), p.cells, p.nodes);
+  const std::size_t inner = p.grid.node(2, 2);
+  EXPECT_LT(p.nodes.force[inner].dot(p.nodes.velocity[inner]), -1e-6);
+}
+
+// A uniform stress field is in equilibrium: interior nodes feel no force, boundary nodes feel
+// the traction T n h/2 per face.
+TEST(CelLagrangianPatch, UniformStressInEquilibrium) {
+  Patch p;
+  Eigen::Matrix3d t;
+  t << -2e3, 300.0, 0.0, 300.0, -1e3, 0.0, 0.0, 0.0, -1.2e3;
+  for (auto& s : p.cells.stress) s = t;
+  assemble_nodal_forces(p.grid, p.active, ForceOptions{}, NodeVector::Zero(), p.cells, p.nodes);
+  EXPECT_LT(p.nodes.force[p.grid.node(2, 2)].norm(), 1e-9);
+  // Right edge, middle node: two half faces with normal +x: f = T n h (the force the cell exerts
+  // on the node is -V T b, the boundary traction the wall must supply is its negative).
+  const NodeVector f = p.nodes.force[p.grid.node(5, 2)];
+  EXPECT_NEAR(f.x(), -t(0, 0) * 0.02, 1e-9);
+  EXPECT_NEAR(f.y(), -t(1, 0) * 0.02, 1e-9);
+}
+
+}  // namespace
+}  // namespace feedflow::cel
