@@ -1,0 +1,193 @@
+#pragma once
+// The pair and wall loops of one composed contact law, with the kinematics of models.md 4.1.
+// OpenMP without atomics: each thread adds into its own force/torque buffer over a static
+// split of the rows, and the buffers are summed afterwards in thread order, so a run is
+// deterministic for a given thread count. Wall contacts touch one particle each and write
+// directly.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "fullsim/dem/force_kernel.hpp"
+
+namespace feedflow {
+
+template <class Law>
+class LawForces final : public ForceKernel {
+ public:
+  using History = typename Law::History;
+  static constexpr std::size_t kHistory = Law::kHistorySize;
+
+  explicit LawForces(const DemParameters& dem)
+      : particle_particle_(dem.particle_particle), particle_wall_(dem.particle_wall) {}
+
+  std::string name() const override { return Law::name(); }
+  std::size_t history_size() const override { return kHistory; }
+
+  DeepestOverlap add_pair_forces(ForceContext& c) override {
+    ParticleStore& p = c.particles;
+    const std::size_t n = p.size();
+#ifdef _OPENMP
+    const int threads = c.parallel ? omp_get_max_threads() : 1;
+#else
+    const int threads = 1;
+#endif
+    buffers_.resize(static_cast<std::size_t>(threads));
+    std::vector<DeepestOverlap> deepest(static_cast<std::size_t>(threads));
+    const Vec3* x = p.position.data();
+    const Vec3* v = p.velocity.data();
+    const Vec3* w = p.angular_velocity.data();
+    const double* rad = p.radius.data();
+    const double* mass = p.mass.data();
+    const double* inertia = p.inertia.data();
+    const std::uint32_t* first = c.neighbours.first.data();
+    const std::uint32_t* partner = c.neighbours.partner.data();
+    double* history = c.neighbours.history.data();
+    const SimulationBox box = c.box;
+    const double dt = c.dt;
+
+#pragma omp parallel num_threads(threads) if (threads > 1)
+    {
+#ifdef _OPENMP
+      const auto tid = static_cast<std::size_t>(omp_get_thread_num());
+#else
+      const std::size_t tid = 0;
+#endif
+      // One thread adds straight into the particles' arrays; several into their own buffers.
+      Vec3* fb = p.force.data();
+      Vec3* tb = p.torque.data();
+      if (threads > 1) {
+        std::vector<Vec3>& buffer = buffers_[tid];
+        buffer.assign(2 * n, Vec3::Zero());
+        fb = buffer.data();
+        tb = fb + n;
+      }
+      DeepestOverlap worst;
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 xi = x[i];
+        const double ri = rad[i];
+        for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
+          const std::size_t j = partner[e];
+          double* h = history + static_cast<std::size_t>(e) * kHistory;
+          const Vec3 d = box.minimum_image(xi - x[j]);
+          const double rj = rad[j];
+          const double reach = ri + rj;
+          const double r2 = d.squaredNorm();
+          if (r2 >= reach * reach) {
+            if constexpr (kHistory > 0) std::fill(h, h + kHistory, 0.0);
+            continue;
+          }
+          const double r = std::sqrt(r2);
+          ContactInput in;
+          in.overlap = reach - r;
+          in.normal = d / r;
+          const double ci = ri - 0.5 * in.overlap, cj = rj - 0.5 * in.overlap;
+          const Vec3 vr = v[i] - v[j];
+          in.normal_velocity = vr.dot(in.normal);
+          in.tangential_velocity =
+              vr - in.normal_velocity * in.normal + in.normal.cross(ci * w[i] + cj * w[j]);
+          in.relative_angular_velocity = w[i] - w[j];
+          in.effective_radius = ri * rj / reach;
+          in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
+          in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
+          in.dt = dt;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_particle_.evaluate(in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          const Vec3 f = out.normal_force * in.normal + out.tangential_force;
+          const Vec3 lever = in.normal.cross(out.tangential_force);
+          fb[i] += f;
+          fb[j] -= f;
+          tb[i] += out.rolling_torque - ci * lever;
+          tb[j] -= out.rolling_torque + cj * lever;
+          const double ratio = in.overlap / std::min(ri, rj);
+          if (ratio > worst.ratio) worst = {ratio, i, false};
+        }
+      }
+      deepest[tid] = worst;
+#pragma omp barrier
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < (threads > 1 ? n : 0); ++i) {
+        Vec3 f = Vec3::Zero(), t = Vec3::Zero();
+        for (std::size_t k = 0; k < buffers_.size(); ++k) {
+          f += buffers_[k][i];
+          t += buffers_[k][n + i];
+        }
+        p.force[i] += f;
+        p.torque[i] += t;
+      }
+    }
+    DeepestOverlap result;
+    for (const auto& d : deepest)
+      if (d.ratio > result.ratio) result = d;
+    return result;
+  }
+
+  DeepestOverlap add_wall_forces(ForceContext& c) override {
+    ParticleStore& p = c.particles;
+    const std::size_t n = p.size();
+    const std::size_t walls = c.walls.size();
+    const std::size_t stride = walls * kHistory;
+    DeepestOverlap result;
+    if (walls == 0) return result;
+    double* history = p.wall_history.data();
+#pragma omp parallel if (c.parallel)
+    {
+      DeepestOverlap worst;
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 xi = p.position[i];
+        const double ri = p.radius[i];
+        for (std::size_t k = 0; k < walls; ++k) {
+          const Wall& wall = c.walls[k];
+          double* h = history + i * stride + k * kHistory;
+          const WallTouch touch = wall.touch(xi);
+          const double overlap = ri - touch.gap;
+          if (!(overlap > 0.0) || !wall.active(c.time)) {
+            if constexpr (kHistory > 0) std::fill(h, h + kHistory, 0.0);
+            continue;
+          }
+          ContactInput in;
+          in.overlap = overlap;
+          in.normal = touch.normal;
+          const double ci = ri - overlap;
+          const Vec3 vr = p.velocity[i] - touch.surface_velocity;
+          in.normal_velocity = vr.dot(in.normal);
+          in.tangential_velocity = vr - in.normal_velocity * in.normal +
+                                   in.normal.cross(ci * p.angular_velocity[i]);
+          in.relative_angular_velocity = p.angular_velocity[i] - wall.angular_velocity();
+          in.effective_radius = ri;
+          in.effective_mass = p.mass[i];
+          in.effective_inertia = p.inertia[i];
+          in.dt = c.dt;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_wall_.evaluate(in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          p.force[i] += out.normal_force * in.normal + out.tangential_force;
+          p.torque[i] += out.rolling_torque - ci * in.normal.cross(out.tangential_force);
+          const double ratio = overlap / ri;
+          if (ratio > worst.ratio) worst = {ratio, i, true};
+        }
+      }
+#pragma omp critical
+      if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
+        result = worst;
+    }
+    return result;
+  }
+
+ private:
+  Law particle_particle_;
+  Law particle_wall_;
+  std::vector<std::vector<Vec3>> buffers_;
+};
+
+}  // namespace feedflow
