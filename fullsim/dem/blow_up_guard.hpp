@@ -1,7 +1,7 @@
 #pragma once
 // Stops a run that has gone unstable before it produces garbage: an overlap beyond a fraction
 // of the radius, a non-finite state, or kinetic energy growing beyond what gravity has fed in
-// (KE > growth (KE_0 + W_gravity) + floor; not checked when walls move, as they feed energy
+// (KE > growth (KE_0 + W_gravity) + M v_design^2 / 2; not checked when walls move, as they feed energy
 // the guard does not book). Each failure throws NumericalFailure naming the step, the particle
 // id, its position and a safe time step.
 #include <string>

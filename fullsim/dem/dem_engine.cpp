@@ -89,9 +89,10 @@ void DemEngine::prepare(std::ostream& out) {
   particles_.set_wall_history_stride(walls_.size() * kernel_->history_size());
   rebuild_neighbours();
   compute_forces();
-  guard_.start(particles_.kinetic_energy(),
-               1e-3 * particles_.total_mass() *
-                   std::max(settings_.gravity.norm() * rmax, 1e-4));
+  // Floor: every particle moving at the design speed of the time step (initial overlaps may
+  // release elastic energy the guard cannot book).
+  const double v_design = settings_.time_step.max_velocity;
+  guard_.start(particles_.kinetic_energy(), 0.5 * particles_.total_mass() * v_design * v_design);
   plan_ = make_plan();
   out << plan_;
   if (!time_step_.warning.empty()) out << time_step_.warning << '\n';
