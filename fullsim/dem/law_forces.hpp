@@ -1,8 +1,8 @@
 #pragma once
 // The pair and wall loops of one composed contact law, with the kinematics of models.md 4.1.
-// OpenMP without atomics: each thread adds into its own force/torque buffer over a static
-// split of the rows, and the buffers are summed afterwards in thread order, so a run is
-// deterministic for a given thread count. Wall contacts touch one particle each and write
+// OpenMP without atomics: over a static split of the rows, thread 0 adds into the particles'
+// arrays and every other thread into its own force/torque buffer; the buffers are added
+// afterwards in thread order, so a run is deterministic for a given thread count. Wall contacts touch one particle each and write
 // directly.
 #include <algorithm>
 #include <cmath>
@@ -37,8 +37,14 @@ class LawForces final : public ForceKernel {
 #else
     const int threads = 1;
 #endif
+    // Thread 0 adds straight into the particles' arrays; thread t > 0 into its own buffer,
+    // which is kept zeroed between steps and reduced over the slot range it touched.
     buffers_.resize(static_cast<std::size_t>(threads));
+    for (std::size_t t = 1; t < buffers_.size(); ++t)
+      if (buffers_[t].size() != 2 * n) buffers_[t].assign(2 * n, Vec3::Zero());
     std::vector<DeepestOverlap> deepest(static_cast<std::size_t>(threads));
+    std::vector<std::size_t> touched_lo(static_cast<std::size_t>(threads), n);
+    std::vector<std::size_t> touched_hi(static_cast<std::size_t>(threads), 0);
     const Vec3* x = p.position.data();
     const Vec3* v = p.velocity.data();
     const Vec3* w = p.angular_velocity.data();
@@ -58,16 +64,14 @@ class LawForces final : public ForceKernel {
 #else
       const std::size_t tid = 0;
 #endif
-      // One thread adds straight into the particles' arrays; several into their own buffers.
       Vec3* fb = p.force.data();
       Vec3* tb = p.torque.data();
-      if (threads > 1) {
-        std::vector<Vec3>& buffer = buffers_[tid];
-        buffer.assign(2 * n, Vec3::Zero());
-        fb = buffer.data();
+      if (tid > 0) {
+        fb = buffers_[tid].data();
         tb = fb + n;
       }
       DeepestOverlap worst;
+      std::size_t lo = n, hi = 0;
 #pragma omp for schedule(static)
       for (std::size_t i = 0; i < n; ++i) {
         const Vec3 xi = x[i];
@@ -86,7 +90,7 @@ class LawForces final : public ForceKernel {
           const double r = std::sqrt(r2);
           ContactInput in;
           in.overlap = reach - r;
-          in.normal = d / r;
+          in.normal = d * (1.0 / r);
           const double ci = ri - 0.5 * in.overlap, cj = rj - 0.5 * in.overlap;
           const Vec3 vr = v[i] - v[j];
           in.normal_velocity = vr.dot(in.normal);
@@ -107,21 +111,31 @@ class LawForces final : public ForceKernel {
           fb[j] -= f;
           tb[i] += out.rolling_torque - ci * lever;
           tb[j] -= out.rolling_torque + cj * lever;
-          const double ratio = in.overlap / std::min(ri, rj);
-          if (ratio > worst.ratio) worst = {ratio, i, false};
+          lo = std::min(lo, std::min(i, j));
+          hi = std::max(hi, std::max(i, j) + 1);
+          const double smaller = std::min(ri, rj);
+          if (in.overlap > worst.ratio * smaller) worst = {in.overlap / smaller, i, false};
         }
       }
       deepest[tid] = worst;
+      touched_lo[tid] = lo;
+      touched_hi[tid] = hi;
 #pragma omp barrier
+      std::size_t from = n, to = 0;
+      for (std::size_t t = 1; t < touched_lo.size(); ++t) {
+        from = std::min(from, touched_lo[t]);
+        to = std::max(to, touched_hi[t]);
+      }
 #pragma omp for schedule(static)
-      for (std::size_t i = 0; i < (threads > 1 ? n : 0); ++i) {
-        Vec3 f = Vec3::Zero(), t = Vec3::Zero();
-        for (std::size_t k = 0; k < buffers_.size(); ++k) {
-          f += buffers_[k][i];
-          t += buffers_[k][n + i];
+      for (std::size_t i = from; i < to; ++i) {
+        for (std::size_t t = 1; t < buffers_.size(); ++t) {
+          Vec3& bf = buffers_[t][i];
+          Vec3& bt = buffers_[t][n + i];
+          p.force[i] += bf;
+          p.torque[i] += bt;
+          bf.setZero();
+          bt.setZero();
         }
-        p.force[i] += f;
-        p.torque[i] += t;
       }
     }
     DeepestOverlap result;

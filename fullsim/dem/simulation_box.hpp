@@ -17,12 +17,15 @@ struct SimulationBox {
   Vec3 length() const { return upper - lower; }
   bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }
 
-  // The shortest image of a separation vector.
+  // The shortest image of a separation vector of two positions no farther than 1.5 box
+  // lengths apart along each periodic axis (positions are wrapped at every rebuild and move
+  // less than the skin between rebuilds). No division: this runs once per listed pair.
   Vec3 minimum_image(Vec3 d) const {
     for (int a = 0; a < 3; ++a)
       if (periodic[a]) {
         const double l = upper[a] - lower[a];
-        d[a] -= l * std::nearbyint(d[a] / l);
+        if (d[a] > 0.5 * l) d[a] -= l;
+        else if (d[a] < -0.5 * l) d[a] += l;
       }
     return d;
   }
