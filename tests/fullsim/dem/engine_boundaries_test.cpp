@@ -84,6 +84,29 @@ TEST(DemBoundaries, OutletSinkRemovesAndBooksTheMass) {
   }
 }
 
+// A gate removed at a given time: a sphere resting on it stays put before t = 0.05 s and falls
+// freely after (z drops by g t^2 / 2 within 1 %), its wall history cleared.
+TEST(DemBoundaries, WallRemovedAtItsTimeLetsTheSphereFall) {
+  DemSettings s = hertz_settings(0.3, 0.5, 0.0);
+  ParticleStore p;
+  p.add(Vec3(0.01, 0.01, 0.0115), kRadius, kDensity);
+  SimulationBox box{Vec3::Zero(), Vec3(0.02, 0.02, 0.02), {false, false, false}};
+  DemEngine e(s, box, p);
+  e.add_wall(Wall::plane("gate", Vec3(0, 0, 0.01), Vec3::UnitZ()).removed_at(0.05));
+  std::ostringstream plan;
+  e.prepare(plan);
+  EXPECT_NE(plan.str().find("removed at t = 0.05 s"), std::string::npos) << plan.str();
+  e.run_until(0.0499);
+  const double resting = e.particles().position[0].z();
+  EXPECT_NEAR(resting, 0.0115, 1e-5);
+  e.run_until(0.05);
+  const double t0 = e.time();
+  e.run_until(0.07);
+  const double fall = e.particles().position[0].z() - resting;
+  const double t = e.time() - t0;
+  EXPECT_NEAR(fall, -0.5 * 9.81 * t * t, 0.01 * 0.5 * 9.81 * t * t);
+}
+
 // A step far above the stable one is refused; forced, the blow-up guard stops the run with
 // the step, the particle id, its position and a safe time step.
 TEST(DemBoundaries, BlowUpGuardFiresWithItsMessage) {
