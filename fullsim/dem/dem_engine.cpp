@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #ifdef _OPENMP
@@ -88,6 +89,7 @@ void DemEngine::prepare(std::ostream& out) {
   neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
   particles_.set_wall_history_stride(walls_.size() * kernel_->history_size());
   rebuild_neighbours();
+  reset_forces();
   compute_forces();
   // Floor: every particle moving at the design speed of the time step (initial overlaps may
   // release elastic energy the guard cannot book).
@@ -139,13 +141,15 @@ void DemEngine::rebuild_neighbours() {
   neighbours_.rebuild(particles_, box_);
 }
 
-void DemEngine::compute_forces() {
-  const std::size_t n = particles_.size();
-  const Vec3 g = settings_.gravity;
-  for (std::size_t i = 0; i < n; ++i) {
-    particles_.force[i] = particles_.mass[i] * g;
+void DemEngine::reset_forces() {
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    particles_.force[i] = particles_.mass[i] * settings_.gravity;
     particles_.torque[i].setZero();
   }
+}
+
+void DemEngine::compute_forces() {
+  const std::size_t n = particles_.size();
   ForceContext c{particles_, neighbours_, box_,   walls_,
                  time_,      time_step_.value, n >= settings_.parallel_from};
   DeepestOverlap pairs, walls;
@@ -164,14 +168,24 @@ void DemEngine::one_step() {
   const double dt = time_step_.value;
   const std::size_t n = particles_.size();
   ParticleStore& p = particles_;
+  // First half kick and drift; the forces are then reset to the weight, and the largest
+  // displacement since the last rebuild is taken on the way (no separate pass).
+  double moved2 = 0.0;
   {
     auto scope = report_.time("integration");
-#pragma omp parallel for schedule(static) if (n >= settings_.parallel_from)
+    const Vec3 g = settings_.gravity;
+    const std::vector<Vec3>& reference = neighbours_.reference_positions();
+    const bool same_slots = reference.size() == n;
+#pragma omp parallel for schedule(static) reduction(max : moved2) if (n >= settings_.parallel_from)
     for (std::size_t i = 0; i < n; ++i) {
       p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
       p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
       p.position[i] += dt * p.velocity[i];
+      p.force[i] = p.mass[i] * g;
+      p.torque[i].setZero();
+      if (same_slots) moved2 = std::max(moved2, (p.position[i] - reference[i]).squaredNorm());
     }
+    if (!same_slots) moved2 = std::numeric_limits<double>::infinity();
     for (auto& w : walls_) w.advance(dt);
   }
   time_ += dt;
@@ -179,7 +193,8 @@ void DemEngine::one_step() {
   {
     auto scope = report_.time("neighbours");
     const bool removed = sink_ && sink_->remove(particles_, time_) > 0;
-    if (removed || neighbours_.needs_rebuild(particles_)) rebuild_neighbours();
+    const double half_skin = 0.5 * neighbours_.skin();
+    if (removed || moved2 > half_skin * half_skin) rebuild_neighbours();
   }
   compute_forces();
   const std::size_t m = particles_.size();

@@ -85,7 +85,8 @@ class DemEngine {
 
  private:
   void rebuild_neighbours();
-  void compute_forces();
+  void reset_forces();    // to the weight, no torque
+  void compute_forces();  // adds the contact forces
   void one_step();
   std::string make_plan() const;
 

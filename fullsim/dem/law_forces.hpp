@@ -1,8 +1,8 @@
 #pragma once
 // The pair and wall loops of one composed contact law, with the kinematics of models.md 4.1.
-// OpenMP without atomics: over a static split of the rows, thread 0 adds into the particles'
-// arrays and every other thread into its own force/torque buffer; the buffers are added
-// afterwards in thread order, so a run is deterministic for a given thread count. Wall contacts touch one particle each and write
+// OpenMP without atomics: each thread owns a block of rows and writes the forces of its own
+// block only; reactions on bodies of other blocks are queued and applied by their owner after
+// a barrier, in thread order, so a run is deterministic for a given thread count. Wall contacts touch one particle each and write
 // directly.
 #include <algorithm>
 #include <cmath>
@@ -37,17 +37,17 @@ class LawForces final : public ForceKernel {
 #else
     const int threads = 1;
 #endif
-    // Thread 0 adds straight into the particles' arrays; thread t > 0 into its own buffer,
-    // which is kept zeroed between steps and reduced over the slot range it touched.
-    buffers_.resize(static_cast<std::size_t>(threads));
-    for (std::size_t t = 1; t < buffers_.size(); ++t)
-      if (buffers_[t].size() != 2 * n) buffers_[t].assign(2 * n, Vec3::Zero());
+    // Thread t owns the rows [n t/T, n (t+1)/T): it adds into the particles' arrays for
+    // every body in its block, and queues the reaction on a body of another block (few, the
+    // slots being Morton-ordered); after a barrier each thread applies the queued reactions on
+    // its block in thread order. No atomics, no race, and deterministic for a thread count.
+    pending_.resize(static_cast<std::size_t>(threads));
     std::vector<DeepestOverlap> deepest(static_cast<std::size_t>(threads));
-    std::vector<std::size_t> touched_lo(static_cast<std::size_t>(threads), n);
-    std::vector<std::size_t> touched_hi(static_cast<std::size_t>(threads), 0);
     const Vec3* x = p.position.data();
     const Vec3* v = p.velocity.data();
     const Vec3* w = p.angular_velocity.data();
+    Vec3* force = p.force.data();
+    Vec3* torque = p.torque.data();
     const double* rad = p.radius.data();
     const double* mass = p.mass.data();
     const double* inertia = p.inertia.data();
@@ -64,18 +64,15 @@ class LawForces final : public ForceKernel {
 #else
       const std::size_t tid = 0;
 #endif
-      Vec3* fb = p.force.data();
-      Vec3* tb = p.torque.data();
-      if (tid > 0) {
-        fb = buffers_[tid].data();
-        tb = fb + n;
-      }
+      const auto nt = static_cast<std::size_t>(threads);
+      const std::size_t begin = n * tid / nt, end = n * (tid + 1) / nt;
+      std::vector<Reaction>& queue = pending_[tid];
+      queue.clear();
       DeepestOverlap worst;
-      std::size_t lo = n, hi = 0;
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t i = begin; i < end; ++i) {
         const Vec3 xi = x[i];
         const double ri = rad[i];
+        Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
         for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
           const std::size_t j = partner[e];
           double* h = history + static_cast<std::size_t>(e) * kHistory;
@@ -107,36 +104,29 @@ class LawForces final : public ForceKernel {
           if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
           const Vec3 f = out.normal_force * in.normal + out.tangential_force;
           const Vec3 lever = in.normal.cross(out.tangential_force);
-          fb[i] += f;
-          fb[j] -= f;
-          tb[i] += out.rolling_torque - ci * lever;
-          tb[j] -= out.rolling_torque + cj * lever;
-          lo = std::min(lo, std::min(i, j));
-          hi = std::max(hi, std::max(i, j) + 1);
+          fi += f;
+          ti += out.rolling_torque - ci * lever;
+          const Vec3 tj = -(out.rolling_torque + cj * lever);
+          if (j >= begin && j < end) {
+            force[j] -= f;
+            torque[j] += tj;
+          } else {
+            queue.push_back({static_cast<std::uint32_t>(j), -f, tj});
+          }
           const double smaller = std::min(ri, rj);
           if (in.overlap > worst.ratio * smaller) worst = {in.overlap / smaller, i, false};
         }
+        force[i] += fi;
+        torque[i] += ti;
       }
       deepest[tid] = worst;
-      touched_lo[tid] = lo;
-      touched_hi[tid] = hi;
 #pragma omp barrier
-      std::size_t from = n, to = 0;
-      for (std::size_t t = 1; t < touched_lo.size(); ++t) {
-        from = std::min(from, touched_lo[t]);
-        to = std::max(to, touched_hi[t]);
-      }
-#pragma omp for schedule(static)
-      for (std::size_t i = from; i < to; ++i) {
-        for (std::size_t t = 1; t < buffers_.size(); ++t) {
-          Vec3& bf = buffers_[t][i];
-          Vec3& bt = buffers_[t][n + i];
-          p.force[i] += bf;
-          p.torque[i] += bt;
-          bf.setZero();
-          bt.setZero();
-        }
-      }
+      for (std::size_t t = 0; t < nt; ++t)
+        for (const Reaction& q : pending_[t])
+          if (q.slot >= begin && q.slot < end) {
+            force[q.slot] += q.force;
+            torque[q.slot] += q.torque;
+          }
     }
     DeepestOverlap result;
     for (const auto& d : deepest)
@@ -201,7 +191,12 @@ class LawForces final : public ForceKernel {
  private:
   Law particle_particle_;
   Law particle_wall_;
-  std::vector<std::vector<Vec3>> buffers_;
+  struct Reaction {
+    std::uint32_t slot;  // the body of another thread's block
+    Vec3 force;
+    Vec3 torque;
+  };
+  std::vector<std::vector<Reaction>> pending_;
 };
 
 }  // namespace feedflow

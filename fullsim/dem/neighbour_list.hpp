@@ -28,6 +28,8 @@ class NeighbourList {
   bool needs_rebuild(const ParticleStore& particles) const;
   // The largest displacement since the last rebuild [m].
   double max_displacement(const ParticleStore& particles) const;
+  // The positions at the last rebuild (slot order of that rebuild).
+  const std::vector<Vec3>& reference_positions() const { return reference_; }
 
   double skin() const { return skin_; }
   double cell_size() const { return cell_size_; }

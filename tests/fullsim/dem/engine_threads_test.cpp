@@ -22,7 +22,7 @@ std::vector<Vec3> run_pile(int threads) {
   e.add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_steps(300);
+  e.run_steps(200);
   const ParticleStore& q = e.particles();
   std::vector<Vec3> out(2 * q.size());
   std::size_t touching = 0;
@@ -37,7 +37,7 @@ std::vector<Vec3> run_pile(int threads) {
   return out;
 }
 
-// 1 and 2 OpenMP threads give the same pile (216 touching spheres, 300 steps) to
+// 1 and 2 OpenMP threads give the same pile (216 touching spheres, 200 steps) to
 // round-off: the per-thread force buffers change only the order of the sums.
 TEST(DemThreads, OneAndTwoThreadsAgreeToRoundOff) {
   const int saved = omp_get_max_threads();
