@@ -127,7 +127,9 @@ std::string DemEngine::make_plan() const {
   s << format("  neighbours: linked cells + half Verlet list, skin %.4g m (rebuild when a "
               "particle moves > skin/2), Morton re-sort every %zu rebuilds\n",
               neighbours_.skin(), settings_.sort_every);
-  s << format("  OpenMP threads: %d (per-thread force buffers, no atomics)%s\n", thread_count(),
+  s << format("  OpenMP threads: %d (each owns a block of rows, cross-block reactions queued, "
+              "no atomics)%s\n",
+              thread_count(),
               particles_.size() >= settings_.parallel_from ? "" : "; this small system runs on one");
   s << "  " << guard_.describe() << '\n';
   return s.str();

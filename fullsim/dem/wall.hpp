@@ -16,7 +16,6 @@ enum class WallShape { plane, cylinder };
 struct WallTouch {
   double gap = 0.0;               // distance of the centre to the surface along the normal [m]
   Vec3 normal = Vec3::UnitZ();    // unit normal from the wall towards the particle
-  Vec3 surface_velocity = Vec3::Zero();  // of the wall at the contact point [m/s]
 };
 
 class Wall {
@@ -64,9 +63,11 @@ class Wall {
       t.gap = inside_ ? radius_ - r : r - radius_;
       t.normal = inside_ ? Vec3(-out) : out;
     }
-    const Vec3 contact = x - t.gap * t.normal;
-    t.surface_velocity = velocity_ + angular_velocity_.cross(contact - point_);
     return t;
+  }
+  // The velocity of the wall's surface at a point of it [m/s].
+  Vec3 surface_velocity(const Vec3& contact) const {
+    return velocity_ + angular_velocity_.cross(contact - point_);
   }
 
  private:
