@@ -2,7 +2,9 @@
 // (seed Table 2: R = 1.5 mm, rho = 390 kg/m^3, P-P and P-W sets) in a box periodic in x and y
 // with a floor and gravity, with Hertz + Mindlin + cdt and with hysteretic_nonlinear2 +
 // history + cdt, each at its own stable step, on 1 and 2 OpenMP threads (second argument).
-//   build/tests/feedflow_benchmarks --benchmark_filter=Dem
+//   build/tests/feedflow_benchmarks --benchmark_filter=DemBed30k
+// (on a shared machine add OMP_WAIT_POLICY=passive; the bed is built and settled once per law,
+// 1500 steps, before the first timing of that law).
 #include <benchmark/benchmark.h>
 
 #include <omp.h>
