@@ -107,6 +107,25 @@ TEST(DemBoundaries, WallRemovedAtItsTimeLetsTheSphereFall) {
   EXPECT_NEAR(fall, -0.5 * 9.81 * t * t, 0.01 * 0.5 * 9.81 * t * t);
 }
 
+// A translating wall: a floor rising at 0.1 m/s carries a resting sphere with it (its centre
+// follows the floor to within the Hertz overlap of its weight).
+TEST(DemBoundaries, TranslatingFloorCarriesTheSphere) {
+  DemSettings s = hertz_settings(0.3, 0.5, 0.0);
+  ParticleStore p;
+  p.add(Vec3(0.01, 0.01, kRadius), kRadius, kDensity);
+  SimulationBox box{Vec3::Zero(), Vec3(0.02, 0.02, 0.04), {false, false, false}};
+  DemEngine e(s, box, p);
+  e.add_wall(Wall::plane("piston", Vec3::Zero(), Vec3::UnitZ()).moving(0.1 * Vec3::UnitZ(),
+                                                                        Vec3::Zero()));
+  std::ostringstream plan;
+  e.prepare(plan);
+  e.run_until(0.1);
+  const double floor = e.walls()[0].point().z();
+  EXPECT_NEAR(floor, 0.01, 1e-4);
+  EXPECT_NEAR(e.particles().position[0].z(), floor + kRadius, 1e-5);
+  EXPECT_NEAR(e.particles().velocity[0].z(), 0.1, 1e-2);
+}
+
 // A step far above the stable one is refused; forced, the blow-up guard stops the run with
 // the step, the particle id, its position and a safe time step.
 TEST(DemBoundaries, BlowUpGuardFiresWithItsMessage) {
