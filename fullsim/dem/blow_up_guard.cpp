@@ -1,0 +1,68 @@
+#include "fullsim/dem/blow_up_guard.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+
+void BlowUpGuard::start(double kinetic_energy, double floor) {
+  initial_energy_ = kinetic_energy;
+  floor_ = floor;
+  gravity_work_ = 0.0;
+}
+
+void BlowUpGuard::fail(const std::string& what, const ParticleStore& p, std::size_t slot,
+                       long step) const {
+  char buf[400];
+  const Vec3& x = p.position[slot];
+  std::snprintf(buf, sizeof buf,
+                "DEM blow-up at step %ld: %s; particle id %u at (%.6g, %.6g, %.6g) m. "
+                "A safe time step is %.4g s (or below).",
+                step, what.c_str(), p.id[slot], x.x(), x.y(), x.z(), safe_dt_);
+  throw NumericalFailure(buf);
+}
+
+void BlowUpGuard::check_overlap(const DeepestOverlap& deepest, const ParticleStore& p,
+                                long step) const {
+  if (!(deepest.ratio <= limits_.max_overlap_ratio)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%s overlap %.3g R exceeds %.3g R",
+                  deepest.with_wall ? "particle-wall" : "particle-particle", deepest.ratio,
+                  limits_.max_overlap_ratio);
+    fail(buf, p, deepest.slot, step);
+  }
+}
+
+void BlowUpGuard::check_state(const ParticleStore& p, double kinetic_energy, long step) const {
+  if (!std::isfinite(kinetic_energy)) {
+    for (std::size_t k = 0; k < p.size(); ++k)
+      if (!p.velocity[k].allFinite() || !p.position[k].allFinite() ||
+          !p.angular_velocity[k].allFinite())
+        fail("non-finite state", p, k, step);
+  }
+  if (!check_energy_) return;
+  const double allowed =
+      limits_.energy_growth * (initial_energy_ + std::max(gravity_work_, 0.0)) + floor_;
+  if (kinetic_energy > allowed && p.size() > 0) {
+    std::size_t fastest = 0;
+    for (std::size_t k = 1; k < p.size(); ++k)
+      if (p.velocity[k].squaredNorm() > p.velocity[fastest].squaredNorm()) fastest = k;
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "kinetic energy %.4g J grew beyond %.4g J (%.3g x (initial + gravity work))",
+                  kinetic_energy, allowed, limits_.energy_growth);
+    fail(buf, p, fastest, step);
+  }
+}
+
+std::string BlowUpGuard::describe() const {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "blow-up guard: overlap > %.3g R%s", limits_.max_overlap_ratio,
+                check_energy_ ? "; kinetic energy > growth x (initial + gravity work)"
+                              : "; energy check off (moving walls feed energy)");
+  return buf;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,15 @@
+#include "fullsim/dem/force_kernel.hpp"
+
+#include "fullsim/dem/law_forces.hpp"
+
+namespace feedflow {
+
+std::unique_ptr<ForceKernel> make_force_kernel(const ContactLawChoice& choice,
+                                               const DemParameters& dem) {
+  return with_contact_law(choice, [&](auto tag) -> std::unique_ptr<ForceKernel> {
+    using Law = typename decltype(tag)::type;
+    return std::make_unique<LawForces<Law>>(dem);
+  });
+}
+
+}  // namespace feedflow

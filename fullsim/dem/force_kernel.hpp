@@ -1,0 +1,52 @@
+#pragma once
+// The contact forces of one step, behind one virtual call per phase: make_force_kernel() turns
+// the run-time law choice into a LawForces<Law> (law_forces.hpp), whose pair and wall loops are
+// compiled once per composed law, so the loops themselves never dispatch.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fullsim/dem/neighbour_list.hpp"
+#include "fullsim/dem/particle_store.hpp"
+#include "fullsim/dem/simulation_box.hpp"
+#include "fullsim/dem/wall.hpp"
+#include "models/contact/contact_law_registry.hpp"
+#include "models/material/dem_parameters.hpp"
+
+namespace feedflow {
+
+// What the force loops read and add to.
+struct ForceContext {
+  ParticleStore& particles;
+  NeighbourList& neighbours;
+  const SimulationBox& box;
+  const std::vector<Wall>& walls;
+  double time = 0.0;  // [s]
+  double dt = 0.0;    // [s]
+  bool parallel = true;  // run the loops on the OpenMP threads (off for small systems)
+};
+
+// The deepest contact seen by a loop: overlap over the smaller radius.
+struct DeepestOverlap {
+  double ratio = 0.0;
+  std::size_t slot = 0;  // the particle (body i of the pair)
+  bool with_wall = false;
+};
+
+class ForceKernel {
+ public:
+  virtual ~ForceKernel() = default;
+  virtual std::string name() const = 0;
+  // Doubles of history per contact (pair entry or particle-wall pair).
+  virtual std::size_t history_size() const = 0;
+  // Adds the particle-particle forces and torques of the neighbour list.
+  virtual DeepestOverlap add_pair_forces(ForceContext& c) = 0;
+  // Adds the particle-wall forces and torques (P-W parameter set).
+  virtual DeepestOverlap add_wall_forces(ForceContext& c) = 0;
+};
+
+std::unique_ptr<ForceKernel> make_force_kernel(const ContactLawChoice& choice,
+                                               const DemParameters& dem);
+
+}  // namespace feedflow

@@ -1,0 +1,215 @@
+#pragma once
+// The pair and wall loops of one composed contact law, with the kinematics of models.md 4.1.
+// OpenMP without atomics: each thread owns a block of rows and writes the forces of its own
+// block only; reactions on bodies of other blocks are queued and applied by their owner after
+// a barrier, in thread order, so a run is deterministic for a given thread count. Wall contacts touch one particle each and write
+// directly.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "fullsim/dem/force_kernel.hpp"
+
+namespace feedflow {
+
+template <class Law>
+class LawForces final : public ForceKernel {
+ public:
+  using History = typename Law::History;
+  static constexpr std::size_t kHistory = Law::kHistorySize;
+
+  explicit LawForces(const DemParameters& dem)
+      : particle_particle_(dem.particle_particle), particle_wall_(dem.particle_wall) {}
+
+  std::string name() const override { return Law::name(); }
+  std::size_t history_size() const override { return kHistory; }
+
+  DeepestOverlap add_pair_forces(ForceContext& c) override {
+    ParticleStore& p = c.particles;
+    const std::size_t n = p.size();
+#ifdef _OPENMP
+    const int threads = c.parallel ? omp_get_max_threads() : 1;
+#else
+    const int threads = 1;
+#endif
+    // Thread t owns the rows [n t/T, n (t+1)/T): it adds into the particles' arrays for
+    // every body in its block, and queues the reaction on a body of another block (few, the
+    // slots being Morton-ordered); after a barrier each thread applies the queued reactions on
+    // its block in thread order. No atomics, no race, and deterministic for a thread count.
+    pending_.resize(static_cast<std::size_t>(threads));
+    std::vector<DeepestOverlap> deepest(static_cast<std::size_t>(threads));
+    const Vec3* x = p.position.data();
+    const Vec3* v = p.velocity.data();
+    const Vec3* w = p.angular_velocity.data();
+    Vec3* force = p.force.data();
+    Vec3* torque = p.torque.data();
+    const double* rad = p.radius.data();
+    const double* mass = p.mass.data();
+    const double* inertia = p.inertia.data();
+    const std::uint32_t* first = c.neighbours.first.data();
+    const std::uint32_t* partner = c.neighbours.partner.data();
+    double* history = c.neighbours.history.data();
+    const SimulationBox box = c.box;
+    const double dt = c.dt;
+
+#pragma omp parallel num_threads(threads) if (threads > 1)
+    {
+#ifdef _OPENMP
+      const auto tid = static_cast<std::size_t>(omp_get_thread_num());
+#else
+      const std::size_t tid = 0;
+#endif
+      const auto nt = static_cast<std::size_t>(threads);
+      const std::size_t begin = n * tid / nt, end = n * (tid + 1) / nt;
+      std::vector<Reaction>& queue = pending_[tid];
+      queue.clear();
+      DeepestOverlap worst;
+      for (std::size_t i = begin; i < end; ++i) {
+        const Vec3 xi = x[i];
+        const double ri = rad[i];
+        Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
+        for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
+          const std::size_t j = partner[e];
+          double* h = history + static_cast<std::size_t>(e) * kHistory;
+          const Vec3 d = box.minimum_image(xi - x[j]);
+          const double rj = rad[j];
+          const double reach = ri + rj;
+          const double r2 = d.squaredNorm();
+          if (r2 >= reach * reach) {
+            clear(h);
+            continue;
+          }
+          const double r = std::sqrt(r2);
+          ContactInput in;
+          in.overlap = reach - r;
+          in.normal = d * (1.0 / r);
+          const double ci = ri - 0.5 * in.overlap, cj = rj - 0.5 * in.overlap;
+          const Vec3 vr = v[i] - v[j];
+          in.normal_velocity = vr.dot(in.normal);
+          in.tangential_velocity =
+              vr - in.normal_velocity * in.normal + in.normal.cross(ci * w[i] + cj * w[j]);
+          in.relative_angular_velocity = w[i] - w[j];
+          in.effective_radius = ri * rj / reach;
+          in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
+          in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
+          in.dt = dt;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_particle_.evaluate(in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          const Vec3 f = out.normal_force * in.normal + out.tangential_force;
+          const Vec3 lever = in.normal.cross(out.tangential_force);
+          fi += f;
+          ti += out.rolling_torque - ci * lever;
+          const Vec3 tj = -(out.rolling_torque + cj * lever);
+          if (j >= begin && j < end) {
+            force[j] -= f;
+            torque[j] += tj;
+          } else {
+            queue.push_back({static_cast<std::uint32_t>(j), -f, tj});
+          }
+          const double smaller = std::min(ri, rj);
+          if (in.overlap > worst.ratio * smaller) worst = {in.overlap / smaller, i, false};
+        }
+        force[i] += fi;
+        torque[i] += ti;
+      }
+      deepest[tid] = worst;
+#pragma omp barrier
+      for (std::size_t t = 0; t < nt; ++t)
+        for (const Reaction& q : pending_[t])
+          if (q.slot >= begin && q.slot < end) {
+            force[q.slot] += q.force;
+            torque[q.slot] += q.torque;
+          }
+    }
+    DeepestOverlap result;
+    for (const auto& d : deepest)
+      if (d.ratio > result.ratio) result = d;
+    return result;
+  }
+
+  DeepestOverlap add_wall_forces(ForceContext& c) override {
+    ParticleStore& p = c.particles;
+    const std::size_t n = p.size();
+    const std::size_t walls = c.walls.size();
+    const std::size_t stride = walls * kHistory;
+    DeepestOverlap result;
+    if (walls == 0) return result;
+    double* history = p.wall_history.data();
+#pragma omp parallel if (c.parallel)
+    {
+      DeepestOverlap worst;
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 xi = p.position[i];
+        const double ri = p.radius[i];
+        for (std::size_t k = 0; k < walls; ++k) {
+          const Wall& wall = c.walls[k];
+          double* h = history + i * stride + k * kHistory;
+          const WallTouch touch = wall.touch(xi);
+          const double overlap = ri - touch.gap;
+          if (!(overlap > 0.0) || !wall.active(c.time)) {
+            clear(h);
+            continue;
+          }
+          const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
+          ContactInput in;
+          in.overlap = overlap;
+          in.normal = touch.normal;
+          const double ci = ri - overlap;
+          const Vec3 vr = p.velocity[i] - surface_velocity;
+          in.normal_velocity = vr.dot(in.normal);
+          in.tangential_velocity = vr - in.normal_velocity * in.normal +
+                                   in.normal.cross(ci * p.angular_velocity[i]);
+          in.relative_angular_velocity = p.angular_velocity[i] - wall.angular_velocity();
+          in.effective_radius = ri;
+          in.effective_mass = p.mass[i];
+          in.effective_inertia = p.inertia[i];
+          in.dt = c.dt;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_wall_.evaluate(in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          p.force[i] += out.normal_force * in.normal + out.tangential_force;
+          p.torque[i] += out.rolling_torque - ci * in.normal.cross(out.tangential_force);
+          const double ratio = overlap / ri;
+          if (ratio > worst.ratio) worst = {ratio, i, true};
+        }
+      }
+#pragma omp critical
+      if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
+        result = worst;
+    }
+    return result;
+  }
+
+ private:
+  // Zeroes an open contact's history; reads first, so that the many open entries of a dense
+  // list are not written (and their cache lines not dirtied) every step.
+  static void clear(double* h) {
+    if constexpr (kHistory > 0) {
+      for (std::size_t k = 0; k < kHistory; ++k)
+        if (h[k] != 0.0) {
+          std::fill(h, h + kHistory, 0.0);
+          return;
+        }
+    }
+  }
+
+  Law particle_particle_;
+  Law particle_wall_;
+  struct Reaction {
+    std::uint32_t slot;  // the body of another thread's block
+    Vec3 force;
+    Vec3 torque;
+  };
+  std::vector<std::vector<Reaction>> pending_;
+};
+
+}  // namespace feedflow

@@ -1,0 +1,59 @@
+#pragma once
+// Linked cells plus a half Verlet list with a skin. Each pair is listed once, under the
+// particle with the smaller id (so a pair keeps its orientation, and the sign of its
+// tangential and rolling history, across re-sorting). The list is compressed by rows: the
+// neighbours of slot i are partner[first[i] .. first[i+1]). Each entry carries its contact
+// history (history_size() doubles) right beside it; a rebuild matches the new pairs to the old
+// ones by particle ids and carries their history over. No map is consulted in the pair loop.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "fullsim/dem/particle_store.hpp"
+#include "fullsim/dem/simulation_box.hpp"
+
+namespace feedflow {
+
+class NeighbourList {
+ public:
+  NeighbourList() = default;
+  NeighbourList(double skin, std::size_t history_size)
+      : skin_(skin), history_size_(history_size) {}
+
+  // Rebuilds from the current positions (wrapped into the box along periodic axes first) and
+  // carries the history of surviving pairs over. Remembers the positions for needs_rebuild().
+  void rebuild(ParticleStore& particles, const SimulationBox& box);
+  // True when a particle moved more than skin/2 since the last rebuild (or the particle count
+  // changed).
+  bool needs_rebuild(const ParticleStore& particles) const;
+  // The largest displacement since the last rebuild [m].
+  double max_displacement(const ParticleStore& particles) const;
+  // The positions at the last rebuild (slot order of that rebuild).
+  const std::vector<Vec3>& reference_positions() const { return reference_; }
+
+  double skin() const { return skin_; }
+  double cell_size() const { return cell_size_; }
+  std::size_t history_size() const { return history_size_; }
+  std::size_t pair_count() const { return partner.size(); }
+  std::size_t rebuild_count() const { return rebuilds_; }
+  // Contacts carried over by the last rebuild (history found and moved to the new entry).
+  std::size_t carried_over() const { return carried_; }
+
+  std::vector<std::uint32_t> first;    // size n + 1
+  std::vector<std::uint32_t> partner;  // slot j of each entry
+  std::vector<double> history;         // history_size() doubles per entry
+
+  // The history of the pair of ids (a, b), or nullptr when not listed (tests, diagnostics).
+  const double* find_history(std::uint32_t id_a, std::uint32_t id_b) const;
+
+ private:
+  double skin_ = 0.0;
+  std::size_t history_size_ = 0;
+  double cell_size_ = 0.0;
+  std::size_t rebuilds_ = 0;
+  std::size_t carried_ = 0;
+  std::vector<Vec3> reference_;            // positions at the last rebuild
+  std::vector<std::uint64_t> entry_key_;   // (id_i << 32 | id_j) of each entry
+};
+
+}  // namespace feedflow

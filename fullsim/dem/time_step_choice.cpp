@@ -1,0 +1,46 @@
+#include "fullsim/dem/time_step_choice.hpp"
+
+#include <cstdio>
+
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+std::string format(const char* fmt, double a, double b) {
+  char buf[300];
+  std::snprintf(buf, sizeof buf, fmt, a, b);
+  return buf;
+}
+
+}  // namespace
+
+TimeStepChoice choose_time_step(const StableTimeStep& stable, double requested, bool force) {
+  TimeStepChoice c;
+  c.stable = stable.value;
+  if (!(requested > 0.0)) {
+    c.value = stable.value;
+    c.justification = "stable step: " + stable.justification;
+    return c;
+  }
+  c.value = requested;
+  if (requested <= stable.value) {
+    c.justification = format("user step %.4g s (stable step %.4g s)", requested, stable.value);
+    if (requested < 0.5 * stable.value)
+      c.warning = format("warning: the user time step %.4g s is below the stable step %.4g s; "
+                         "the run is safe but slower than it needs to be",
+                         requested, stable.value);
+    return c;
+  }
+  if (!force)
+    throw InputError("", "dem.time_step",
+                     format("time step %.4g s exceeds the stable step %.4g s (", requested,
+                            stable.value) +
+                         stable.justification + "); use a smaller step or force it");
+  c.justification = format("user step %.4g s FORCED above the stable step %.4g s", requested,
+                           stable.value);
+  c.warning = "warning: " + c.justification + "; the blow-up guard watches the run";
+  return c;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,107 @@
+// DEM engine throughput (particle-steps per second): a settled bed of 30 000 pine spheres
+// (seed Table 2: R = 1.5 mm, rho = 390 kg/m^3, P-P and P-W sets) in a box periodic in x and y
+// with a floor and gravity, with Hertz + Mindlin + cdt and with hysteretic_nonlinear2 +
+// history + cdt, each at its own stable step, on 1 and 2 OpenMP threads (second argument).
+//   build/tests/feedflow_benchmarks --benchmark_filter=DemBed30k
+// (on a shared machine add OMP_WAIT_POLICY=passive; the bed is built and settled once per law,
+// 1500 steps, before the first timing of that law).
+#include <benchmark/benchmark.h>
+
+#include <omp.h>
+
+#include <iostream>
+#include <map>
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "fullsim/dem/dem_engine.hpp"
+
+namespace {
+
+using namespace feedflow;
+
+DemContactParameters pine(double friction, double rolling_friction) {  // seed Table 2
+  DemContactParameters p;
+  p.alpha_prime = 20;
+  p.chi = 2;
+  p.a1 = 6e8;
+  p.a2 = 5e4;
+  p.a3 = 5;
+  p.k_nc = 1e-4;
+  p.c = 1e-7;
+  p.youngs_modulus = 1e6;
+  p.poisson_ratio = 0.3;
+  p.restitution = 0.3;
+  p.friction = friction;
+  p.rolling_friction = rolling_friction;
+  return p;
+}
+
+constexpr int kNx = 40, kNy = 25, kNz = 30;  // 30 000 spheres
+constexpr double kRadius = 1.5e-3;
+
+// A bed of kNx x kNy x kNz spheres stacked on a floor (lattice jittered by 2 % of R), settled
+// for 1500 steps; built once per law.
+DemEngine& settled_bed(int law) {
+  static std::map<int, std::unique_ptr<DemEngine>> beds;
+  auto& bed = beds[law];
+  if (bed) return *bed;
+  DemSettings s;
+  s.material.particle = {kRadius, 390.0};
+  s.material.particle_particle = pine(0.5, 0.8);
+  s.material.particle_wall = pine(0.2, 0.6);
+  s.law = law == 0 ? ContactLawChoice{NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt,
+                                      CohesionLaw::none}
+                   : ContactLawChoice{NormalLaw::hysteretic_nonlinear2, TangentialLaw::history,
+                                      RollingLaw::cdt, CohesionLaw::none};
+  s.quiet = true;
+  const double spacing = 2.0 * kRadius;
+  SimulationBox box{Vec3::Zero(), Vec3(kNx * spacing, kNy * spacing, (kNz + 4) * spacing),
+                    {true, true, false}};
+  ParticleStore p;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < kNz; ++k)
+    for (int j = 0; j < kNy; ++j)
+      for (int i = 0; i < kNx; ++i) {
+        const Vec3 jitter = 0.02 * kRadius * Vec3(u(rng), u(rng), 0.0);
+        p.add(Vec3((i + 0.5) * spacing, (j + 0.5) * spacing, kRadius + k * spacing * 1.001) + jitter,
+              kRadius, 390.0, k);
+      }
+  bed = std::make_unique<DemEngine>(s, box, std::move(p));
+  bed->add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
+  bed->prepare(std::cerr);
+  bed->run_steps(1500);
+  std::cerr << "settled: max speed " << bed->max_speed() << " m/s\n"
+            << bed->performance_report();
+  return *bed;
+}
+
+void DemBed30k(benchmark::State& state) {
+  const int law = static_cast<int>(state.range(0));
+  omp_set_num_threads(static_cast<int>(state.range(1)));
+  DemEngine& bed = settled_bed(law);
+  const double before = bed.particle_steps();
+  constexpr long kSteps = 100;
+  for (auto _ : state) bed.run_steps(kSteps);
+  state.counters["particle_steps_per_s"] =
+      benchmark::Counter(bed.particle_steps() - before, benchmark::Counter::kIsRate);
+  state.counters["particles"] = static_cast<double>(bed.particles().size());
+  state.counters["pairs_per_particle"] =
+      static_cast<double>(bed.neighbours().pair_count()) / static_cast<double>(bed.particles().size());
+  state.counters["dt_us"] = bed.time_step() * 1e6;
+  state.SetLabel(law == 0 ? "hertz+mindlin+cdt" : "hysteretic_nonlinear2+history+cdt");
+}
+
+BENCHMARK(DemBed30k)
+    ->ArgNames({"law", "threads"})
+    ->Args({0, 1})
+    ->Args({0, 2})
+    ->Args({1, 1})
+    ->Args({1, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
+
+}  // namespace

@@ -1,0 +1,56 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fullsim/dem/blow_up_guard.hpp"
+#include "fullsim/dem/time_step_choice.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+// Kinetic energy beyond twice (initial + gravity work) + floor stops the run and names the
+// fastest particle; within the allowance (gravity having fed the energy) it passes.
+TEST(BlowUpGuard, EnergyGrowthWithoutSourceFiresNamingTheFastestParticle) {
+  ParticleStore p;
+  p.add(Vec3(0, 0, 0), 1e-3, 1000.0, 0, Vec3(0.1, 0, 0));
+  p.add(Vec3(0.01, 0, 0), 1e-3, 1000.0, 0, Vec3(0, 0, 3.0));
+  const double ke = p.kinetic_energy();
+  BlowUpGuard guard({0.3, 2.0}, 2.5e-6, true);
+  guard.start(0.01 * ke, 0.0);
+  guard.add_gravity_work(0.6 * ke);  // 2 x (0.01 + 0.6) ke > ke: fed by gravity
+  EXPECT_NO_THROW(guard.check_state(p, ke, 10));
+  guard.start(0.01 * ke, 0.0);      // no source
+  try {
+    guard.check_state(p, ke, 42);
+    FAIL() << "energy growth not caught";
+  } catch (const NumericalFailure& f) {
+    const std::string m = f.what();
+    EXPECT_NE(m.find("at step 42"), std::string::npos) << m;
+    EXPECT_NE(m.find("particle id 1 at (0.01, 0, 0)"), std::string::npos) << m;
+    EXPECT_NE(m.find("2.5e-06 s"), std::string::npos) << m;
+  }
+  BlowUpGuard walls_move({0.3, 2.0}, 2.5e-6, false);
+  walls_move.start(0.01 * ke, 0.0);
+  EXPECT_NO_THROW(walls_move.check_state(p, ke, 42));
+}
+
+// The stable step is used by default with its justification; a smaller user step is taken
+// with a warning, a larger one refused unless forced.
+TEST(TimeStepChoice, StableByDefaultSmallerWarnsLargerRefusedUnlessForced) {
+  const StableTimeStep stable{1e-5, "period 2e-4 s / 20"};
+  const TimeStepChoice def = choose_time_step(stable, 0.0, false);
+  EXPECT_EQ(def.value, 1e-5);
+  EXPECT_NE(def.justification.find("period 2e-4 s / 20"), std::string::npos);
+  EXPECT_TRUE(def.warning.empty());
+  const TimeStepChoice small = choose_time_step(stable, 1e-6, false);
+  EXPECT_EQ(small.value, 1e-6);
+  EXPECT_NE(small.warning.find("below the stable step"), std::string::npos);
+  EXPECT_THROW(choose_time_step(stable, 3e-5, false), InputError);
+  const TimeStepChoice forced = choose_time_step(stable, 3e-5, true);
+  EXPECT_EQ(forced.value, 3e-5);
+  EXPECT_NE(forced.warning.find("FORCED"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace feedflow
