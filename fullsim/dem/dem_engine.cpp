@@ -45,6 +45,11 @@ void DemEngine::add_wall(Wall wall) {
   walls_.push_back(std::move(wall));
 }
 
+void DemEngine::add_mesh_wall(MeshWall mesh) {
+  if (prepared_) throw InputError("", "dem.walls", "walls are added before the run is prepared");
+  meshes_.push_back(std::move(mesh));
+}
+
 void DemEngine::set_outlet_sink(OutletSink sink) { sink_ = std::move(sink); }
 
 void DemEngine::prepare(std::ostream& out) {
@@ -84,10 +89,13 @@ void DemEngine::prepare(std::ostream& out) {
 
   bool walls_move = false;
   for (const auto& w : walls_) walls_move = walls_move || w.moves();
+  for (const auto& m : meshes_) walls_move = walls_move || m.moves();
   guard_ = BlowUpGuard(settings_.guard, stable.value, !walls_move);
 
   neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
-  particles_.set_wall_history_stride(walls_.size() * kernel_->history_size());
+  particles_.set_wall_history_stride(
+      walls_.size() * kernel_->history_size() +
+      meshes_.size() * MeshWall::kMaxContacts * (3 + kernel_->history_size()));
   rebuild_neighbours();
   reset_forces();
   compute_forces();
@@ -118,8 +126,9 @@ std::string DemEngine::make_plan() const {
   for (const auto& k : skipped_) s << "  " << k << '\n';
   s << format("  history: %zu doubles per contact, beside its neighbour entry\n",
               kernel_->history_size());
-  if (walls_.empty()) s << "  walls: none\n";
+  if (walls_.empty() && meshes_.empty()) s << "  walls: none\n";
   for (const auto& w : walls_) s << "  wall: " << w.describe() << '\n';
+  for (const auto& m : meshes_) s << "  wall: " << m.describe() << '\n';
   s << "  " << (sink_ ? sink_->describe() : std::string("outlet sink: none")) << '\n';
   s << format("  gravity: (%.4g, %.4g, %.4g) m/s^2\n", settings_.gravity.x(),
               settings_.gravity.y(), settings_.gravity.z());
@@ -152,7 +161,7 @@ void DemEngine::reset_forces() {
 
 void DemEngine::compute_forces() {
   const std::size_t n = particles_.size();
-  ForceContext c{particles_, neighbours_, box_,   walls_,
+  ForceContext c{particles_, neighbours_, box_,   walls_, meshes_,
                  time_,      time_step_.value, n >= settings_.parallel_from};
   DeepestOverlap pairs, walls;
   {
@@ -189,6 +198,7 @@ void DemEngine::one_step() {
     }
     if (!same_slots) moved2 = std::numeric_limits<double>::infinity();
     for (auto& w : walls_) w.advance(dt);
+    for (auto& m : meshes_) m.advance(dt);
   }
   time_ += dt;
   ++step_;

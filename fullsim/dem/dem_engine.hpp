@@ -20,6 +20,7 @@
 #include "fullsim/common/run_report.hpp"
 #include "fullsim/dem/blow_up_guard.hpp"
 #include "fullsim/dem/force_kernel.hpp"
+#include "fullsim/dem/mesh_wall.hpp"
 #include "fullsim/dem/neighbour_list.hpp"
 #include "fullsim/dem/outlet_sink.hpp"
 #include "fullsim/dem/particle_store.hpp"
@@ -53,6 +54,8 @@ class DemEngine {
   ~DemEngine();
 
   void add_wall(Wall wall);
+  // A triangle-mesh wall (e.g. MeshWall("hopper", read_stl("hopper.stl", 1e-3))).
+  void add_mesh_wall(MeshWall mesh);
   void set_outlet_sink(OutletSink sink);
 
   // Chooses the kernels and the time step, builds the neighbour list and the first forces,
@@ -75,6 +78,7 @@ class DemEngine {
   const ParticleStore& particles() const { return particles_; }
   const NeighbourList& neighbours() const { return neighbours_; }
   const std::vector<Wall>& walls() const { return walls_; }
+  const std::vector<MeshWall>& mesh_walls() const { return meshes_; }
   const OutletSink* outlet_sink() const { return sink_ ? &*sink_ : nullptr; }
   const SimulationBox& box() const { return box_; }
   const RunReport& report() const { return report_; }
@@ -94,6 +98,7 @@ class DemEngine {
   SimulationBox box_;
   ParticleStore particles_;
   std::vector<Wall> walls_;
+  std::vector<MeshWall> meshes_;
   std::optional<OutletSink> sink_;
   ContactLawChoice effective_law_;
   std::vector<std::string> skipped_;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "fullsim/dem/mesh_wall.hpp"
 #include "fullsim/dem/neighbour_list.hpp"
 #include "fullsim/dem/particle_store.hpp"
 #include "fullsim/dem/simulation_box.hpp"
@@ -22,6 +23,7 @@ struct ForceContext {
   NeighbourList& neighbours;
   const SimulationBox& box;
   const std::vector<Wall>& walls;
+  const std::vector<MeshWall>& meshes;
   double time = 0.0;  // [s]
   double dt = 0.0;    // [s]
   bool parallel = true;  // run the loops on the OpenMP threads (off for small systems)
