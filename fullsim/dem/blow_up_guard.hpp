@@ -30,6 +30,16 @@ class BlowUpGuard {
   void check_overlap(const DeepestOverlap& deepest, const ParticleStore& p, long step) const;
   void check_state(const ParticleStore& p, double kinetic_energy, long step) const;
 
+  // The energy book (checkpoints): initial kinetic energy, floor, gravity work so far [J].
+  double initial_energy() const { return initial_energy_; }
+  double energy_floor() const { return floor_; }
+  double gravity_work() const { return gravity_work_; }
+  void resume(double initial_energy, double floor, double gravity_work) {
+    initial_energy_ = initial_energy;
+    floor_ = floor;
+    gravity_work_ = gravity_work;
+  }
+
   bool checks_energy() const { return check_energy_; }
   const BlowUpLimits& limits() const { return limits_; }
   std::string describe() const;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -38,7 +39,75 @@ int thread_count() {
 DemEngine::DemEngine(DemSettings settings, SimulationBox box, ParticleStore particles)
     : settings_(std::move(settings)), box_(box), particles_(std::move(particles)) {}
 
+DemEngine::DemEngine(DemSettings settings, DemCheckpoint checkpoint)
+    : settings_(std::move(settings)),
+      box_(checkpoint.box),
+      particles_(std::move(checkpoint.particles)),
+      walls_(std::move(checkpoint.walls)),
+      sink_(std::move(checkpoint.sink)),
+      time_(checkpoint.time),
+      step_(checkpoint.step),
+      particle_steps_(checkpoint.particle_steps) {
+  pending_ = std::make_unique<DemCheckpoint>(std::move(checkpoint));
+}
+
 DemEngine::~DemEngine() = default;
+DemEngine::DemEngine(DemEngine&&) noexcept = default;
+DemEngine& DemEngine::operator=(DemEngine&&) noexcept = default;
+
+DemCheckpoint DemEngine::checkpoint() const {
+  if (!prepared_)
+    throw std::logic_error("DemEngine::checkpoint() before prepare(): nothing to continue yet");
+  DemCheckpoint c;
+  c.step = step_;
+  c.time = time_;
+  c.time_step = time_step_.value;
+  c.particle_steps = particle_steps_;
+  c.contact_law = kernel_->name();
+  c.gravity = settings_.gravity;
+  c.box = box_;
+  c.particles = particles_;
+  c.neighbours = neighbours_;
+  c.walls = walls_;
+  c.sink = sink_;
+  c.guard_initial_energy = guard_.initial_energy();
+  c.guard_energy_floor = guard_.energy_floor();
+  c.guard_gravity_work = guard_.gravity_work();
+  return c;
+}
+
+void DemEngine::write_checkpoint(const std::filesystem::path& path) const {
+  write_dem_checkpoint(path, checkpoint());
+}
+
+std::size_t DemEngine::wall_history_stride() const {
+  // Per particle: one history per analytic wall, and per mesh wall kMaxContacts slots holding
+  // the contact normal (3) and a history each.
+  return walls_.size() * kernel_->history_size() +
+         meshes_.size() * MeshWall::kMaxContacts * (3 + kernel_->history_size());
+}
+
+void DemEngine::restore_prepared_state() {
+  const DemCheckpoint& c = *pending_;
+  auto refuse = [](const std::string& what) {
+    throw std::runtime_error("DEM restart refused: " + what +
+                             " (restart with the settings of the checkpointed run)");
+  };
+  if (kernel_->name() != c.contact_law)
+    refuse("the contact law is '" + kernel_->name() + "', the checkpoint's '" + c.contact_law + "'");
+  if (time_step_.value != c.time_step)
+    refuse(format("the time step is %.17g s, the checkpoint's %.17g s", time_step_.value,
+                  c.time_step));
+  if (settings_.gravity != c.gravity) refuse("gravity differs from the checkpoint's");
+  if (c.neighbours.history_size() != kernel_->history_size())
+    refuse(format("the law keeps %zu history doubles per contact, the checkpoint %zu",
+                  kernel_->history_size(), c.neighbours.history_size()));
+  if (particles_.wall_history_stride() != wall_history_stride())
+    refuse("the wall history does not match the walls and the law");
+  neighbours_ = c.neighbours;
+  guard_.resume(c.guard_initial_energy, c.guard_energy_floor, c.guard_gravity_work);
+  pending_.reset();
+}
 
 void DemEngine::add_wall(Wall wall) {
   if (prepared_) throw InputError("", "dem.walls", "walls are added before the run is prepared");
@@ -92,17 +161,20 @@ void DemEngine::prepare(std::ostream& out) {
   for (const auto& m : meshes_) walls_move = walls_move || m.moves();
   guard_ = BlowUpGuard(settings_.guard, stable.value, !walls_move);
 
-  neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
-  particles_.set_wall_history_stride(
-      walls_.size() * kernel_->history_size() +
-      meshes_.size() * MeshWall::kMaxContacts * (3 + kernel_->history_size()));
-  rebuild_neighbours();
-  reset_forces();
-  compute_forces();
-  // Floor: every particle moving at the design speed of the time step (initial overlaps may
-  // release elastic energy the guard cannot book).
-  const double v_design = settings_.time_step.max_velocity;
-  guard_.start(particles_.kinetic_energy(), 0.5 * particles_.total_mass() * v_design * v_design);
+  if (pending_) {
+    // A restored run keeps its list, forces and energy book as they were.
+    restore_prepared_state();
+  } else {
+    neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
+    particles_.set_wall_history_stride(wall_history_stride());
+    rebuild_neighbours();
+    reset_forces();
+    compute_forces();
+    // Floor: every particle moving at the design speed of the time step (initial overlaps may
+    // release elastic energy the guard cannot book).
+    const double v_design = settings_.time_step.max_velocity;
+    guard_.start(particles_.kinetic_energy(), 0.5 * particles_.total_mass() * v_design * v_design);
+  }
   plan_ = make_plan();
   out << plan_;
   if (!time_step_.warning.empty()) out << time_step_.warning << '\n';

@@ -11,6 +11,7 @@
 //   engine.prepare(std::cout);       // plan, time step and its justification
 //   engine.run_steps(10000);
 //   std::cout << engine.performance_report();
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -19,6 +20,7 @@
 
 #include "fullsim/common/run_report.hpp"
 #include "fullsim/dem/blow_up_guard.hpp"
+#include "fullsim/dem/dem_checkpoint.hpp"
 #include "fullsim/dem/force_kernel.hpp"
 #include "fullsim/dem/mesh_wall.hpp"
 #include "fullsim/dem/neighbour_list.hpp"
@@ -51,7 +53,15 @@ struct DemSettings {
 class DemEngine {
  public:
   DemEngine(DemSettings settings, SimulationBox box, ParticleStore particles);
+  // Restores a run from a checkpoint (read_dem_checkpoint(), or one taken by checkpoint()):
+  // particles, walls, sink, box, neighbour list with its contact history, step and time.
+  // prepare() then checks that `settings` give the checkpoint's contact law, time step and
+  // gravity (and throws std::runtime_error naming what differs) instead of rebuilding, so the
+  // run continues bit-identically.
+  DemEngine(DemSettings settings, DemCheckpoint checkpoint);
   ~DemEngine();
+  DemEngine(DemEngine&&) noexcept;
+  DemEngine& operator=(DemEngine&&) noexcept;
 
   void add_wall(Wall wall);
   // A triangle-mesh wall (e.g. MeshWall("hopper", read_stl("hopper.stl", 1e-3))).
@@ -65,6 +75,11 @@ class DemEngine {
   void run_steps(long steps);
   // Advances until `time` (at least) is reached.
   void run_until(double time);
+
+  // The state as it stands (after prepare()), for write_dem_checkpoint().
+  DemCheckpoint checkpoint() const;
+  // Writes checkpoint() to `path` (whole or nothing).
+  void write_checkpoint(const std::filesystem::path& path) const;
 
   std::string plan() const { return plan_; }
   std::string performance_report() const;
@@ -93,6 +108,8 @@ class DemEngine {
   void compute_forces();  // adds the contact forces
   void one_step();
   std::string make_plan() const;
+  void restore_prepared_state();            // from pending_, in prepare()
+  std::size_t wall_history_stride() const;  // wall-history doubles per particle
 
   DemSettings settings_;
   SimulationBox box_;
@@ -108,6 +125,7 @@ class DemEngine {
   BlowUpGuard guard_;
   RunReport report_{"DEM run"};
   std::string plan_;
+  std::unique_ptr<DemCheckpoint> pending_;  // a restored run's state until prepare()
   bool prepared_ = false;
   double time_ = 0.0;
   long step_ = 0;

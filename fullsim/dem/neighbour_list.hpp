@@ -7,6 +7,7 @@
 // ones by particle ids and carries their history over. No map is consulted in the pair loop.
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "fullsim/dem/particle_store.hpp"
@@ -42,6 +43,28 @@ class NeighbourList {
   std::vector<std::uint32_t> first;    // size n + 1
   std::vector<std::uint32_t> partner;  // slot j of each entry
   std::vector<double> history;         // history_size() doubles per entry
+
+  // The id pair (id_i << 32 | id_j) of each entry.
+  const std::vector<std::uint64_t>& entry_keys() const { return entry_key_; }
+
+  // A list as saved in a checkpoint (entries, their id pairs and history, the positions at the
+  // last rebuild, the counters), taken as is.
+  static NeighbourList restored(double skin, std::size_t history_size, double cell_size,
+                                std::size_t rebuilds, std::size_t carried,
+                                std::vector<std::uint32_t> first, std::vector<std::uint32_t> partner,
+                                std::vector<double> history, std::vector<std::uint64_t> keys,
+                                std::vector<Vec3> reference) {
+    NeighbourList l(skin, history_size);
+    l.cell_size_ = cell_size;
+    l.rebuilds_ = rebuilds;
+    l.carried_ = carried;
+    l.first = std::move(first);
+    l.partner = std::move(partner);
+    l.history = std::move(history);
+    l.entry_key_ = std::move(keys);
+    l.reference_ = std::move(reference);
+    return l;
+  }
 
   // The history of the pair of ids (a, b), or nullptr when not listed (tests, diagnostics).
   const double* find_history(std::uint32_t id_a, std::uint32_t id_b) const;

@@ -20,6 +20,17 @@ OutletSink OutletSink::plane(const Vec3& point, const Vec3& outward) {
   return s;
 }
 
+OutletSink OutletSink::restored(bool is_box, const Vec3& a, const Vec3& b, double removed_mass,
+                                std::vector<SinkEvent> events) {
+  OutletSink s;
+  s.is_box_ = is_box;
+  s.a_ = a;
+  s.b_ = b;
+  s.removed_mass_ = removed_mass;
+  s.events_ = std::move(events);
+  return s;
+}
+
 bool OutletSink::captures(const Vec3& x) const {
   if (!is_box_) return (x - a_).dot(b_) > 0.0;
   return (x.array() >= a_.array()).all() && (x.array() <= b_.array()).all();

@@ -23,6 +23,13 @@ class OutletSink {
   // Removes what lies beyond the plane through `point` (on the side `outward` points to).
   static OutletSink plane(const Vec3& point, const Vec3& outward);
 
+  // A sink as saved in a checkpoint, with its booked mass and events, taken as is.
+  static OutletSink restored(bool is_box, const Vec3& a, const Vec3& b, double removed_mass,
+                             std::vector<SinkEvent> events);
+  bool is_box() const { return is_box_; }
+  const Vec3& lower_or_point() const { return a_; }
+  const Vec3& upper_or_outward() const { return b_; }
+
   bool captures(const Vec3& x) const;
   // Removes the captured particles of the store at time t; returns how many.
   std::size_t remove(ParticleStore& particles, double t);

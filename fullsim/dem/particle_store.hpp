@@ -34,6 +34,9 @@ class ParticleStore {
   // Sets the doubles of wall-contact history per particle (zeroes them).
   void set_wall_history_stride(std::size_t stride);
   std::size_t wall_history_stride() const { return wall_stride_; }
+  // The id the next added particle gets; set when restoring a checkpoint.
+  std::uint32_t next_id() const { return next_id_; }
+  void set_next_id(std::uint32_t id) { next_id_ = id; }
 
   // Reorders the slots: new slot k holds the particle of old slot order[k].
   void permute(const std::vector<std::size_t>& order);

@@ -32,6 +32,13 @@ class Wall {
   Wall& moving(const Vec3& velocity, const Vec3& angular_velocity);
   // The wall is gone from time `t` on.
   Wall& removed_at(double t);
+  // Sets the current point and direction as they are (restoring a checkpoint: no
+  // normalisation, so a restarted run sees the same bits).
+  Wall& placed(const Vec3& point, const Vec3& direction) {
+    point_ = point;
+    direction_ = direction;
+    return *this;
+  }
 
   WallShape shape() const { return shape_; }
   const std::string& name() const { return name_; }
