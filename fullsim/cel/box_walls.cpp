@@ -7,7 +7,8 @@ namespace {
 
 std::uint8_t face_bits(WallCondition w, NodeConstraint normal) {
   switch (w) {
-    case WallCondition::open: return 0;
+    case WallCondition::open:
+    case WallCondition::outflow: return 0;
     case WallCondition::free_slip: return static_cast<std::uint8_t>(normal);
     case WallCondition::no_slip: return static_cast<std::uint8_t>(NodeConstraint::fixed);
   }
@@ -28,7 +29,7 @@ void assign_node_constraints(const PlaneStrainGrid& grid, const BoxWalls& walls,
     nodes.constraint[a] = bits;
   }
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
-    if (!cells.solid[c]) continue;
+    if (cells.solid[c] != kSolidFixed) continue;  // wall cells are left to the contact
     for (std::size_t a : grid.cell_nodes(c))
       nodes.constraint[a] = static_cast<std::uint8_t>(NodeConstraint::fixed);
   }

@@ -1,13 +1,14 @@
 #pragma once
 // The four faces of the grid box as velocity boundary conditions on their nodes (models.md 2.3
-// item 5, 2.6): free slip (symmetry: zero normal velocity), no slip (zero velocity) or open (no
-// constraint; with no outflow boundary yet, material stays in the grid: the remap has no flux
-// through the box faces). Cells marked solid fix all their nodes (no slip).
+// item 5, 2.4 item 6, 2.6): free slip (symmetry: zero normal velocity), no slip (zero velocity),
+// open (no constraint, no flux: material reaching the face stays in the grid) or outflow (no
+// constraint; material crossing the face in the remap leaves the grid and its mass is booked,
+// Abaqus' outflow ZERO PRESSURE; only void enters). Cells fixed solid fix all their nodes.
 #include "fullsim/cel/cel_fields.hpp"
 
 namespace feedflow::cel {
 
-enum class WallCondition { open, free_slip, no_slip };
+enum class WallCondition { open, free_slip, no_slip, outflow };
 
 struct BoxWalls {
   WallCondition left = WallCondition::free_slip;

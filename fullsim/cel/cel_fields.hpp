@@ -11,12 +11,17 @@
 
 namespace feedflow::cel {
 
+// CellFields::solid values: cells fixed by CelSolver::set_solid (no slip on their nodes) and
+// cells inside a rigid wall (their nodes are left to the wall contact).
+inline constexpr std::uint8_t kSolidFixed = 1;
+inline constexpr std::uint8_t kSolidInsideWall = 2;
+
 struct CellFields {
   std::vector<double> volume_fraction;   // material volume / cell volume, in [0, 1] [-]
   std::vector<double> mass;              // material mass per unit depth [kg/m]
   std::vector<Eigen::Matrix3d> stress;   // Cauchy stress, tension positive [Pa]
   std::vector<double> void_ratio;        // [-]
-  std::vector<std::uint8_t> solid;       // 1: inside a wall (no material, no transport)
+  std::vector<std::uint8_t> solid;       // kSolid*: no material, no transport; 0: fluid
   // Per step, written by the phases:
   std::vector<double> wave_speed;        // c_d bound of the last time-step pass [m/s]
   std::vector<double> volume_rate;       // tr D of the last Lagrangian phase [1/s]

@@ -14,13 +14,15 @@ CelSolver::CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model,
     : grid_(grid), model_(model), options_(options), remap_(options.volume_fraction_cut) {
   cells_.resize(grid_.cell_count());
   nodes_.resize(grid_.node_count());
+  mark_wall_cells(grid_, place_walls(options_.rigid_walls, time_), cells_);
   refresh_nodes();
 }
 
 void CelSolver::add_material(const MaterialBlock& b) {
   const double h = grid_.cell_size;
+  const auto walls = place_walls(options_.rigid_walls, time_);
   for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
-    if (cells_.solid[c]) continue;
+    if (cells_.solid[c] || distance_to_walls(walls, grid_.cell_centre(c)) < 0.0) continue;
     const Eigen::Vector2d lo = grid_.cell_centre(c).array() - 0.5 * h;
     const double wx = std::max(0.0, std::min(lo.x() + h, b.upper.x()) - std::max(lo.x(), b.lower.x()));
     const double wy = std::max(0.0, std::min(lo.y() + h, b.upper.y()) - std::max(lo.y(), b.lower.y()));
@@ -39,7 +41,7 @@ void CelSolver::add_material(const MaterialBlock& b) {
 }
 
 void CelSolver::set_solid(std::size_t c) {
-  cells_.solid[c] = 1;
+  cells_.solid[c] = kSolidFixed;
   cells_.volume_fraction[c] = 0.0;
   cells_.mass[c] = 0.0;
   cells_.stress[c].setZero();
@@ -75,6 +77,8 @@ double CelSolver::gravity_factor(double t) const {
 
 CelStepReport CelSolver::step() {
   CelStepReport report;
+  const auto walls = place_walls(options_.rigid_walls, time_);
+  mark_wall_cells(grid_, walls, cells_);
   refresh_active_cells();
   report.time_step = stable_time_step(grid_, active_, model_, options_.time_step, options_.forces,
                                       nodes_, cells_);
@@ -86,12 +90,16 @@ CelStepReport CelSolver::step() {
     for (std::size_t a = 0; a < grid_.node_count(); ++a)
       nodes_.force[a] -= options_.settling_damping * nodes_.mass[a] * nodes_.velocity[a];
   report.dropped_momentum = advance_node_velocities(0.5 * (dt_previous_ + dt), void_node_mass_, nodes_);
+  report.wall_forces = apply_wall_contact(grid_, walls, options_.contact, 0.5 * (dt_previous_ + dt),
+                                          void_node_mass_, nodes_);
   const CellUpdateReport cu =
       update_cell_states(grid_, active_, model_, options_.substepping, dt, nodes_, cells_);
   report.most_substeps = cu.most_substeps;
   report.unconverged_cells = cu.unconverged_cells;
-  report.remap = remap_.remap(grid_, dt, steps_ % 2 == 0, void_node_mass_, cells_, nodes_);
+  report.remap =
+      remap_.remap(grid_, options_.walls, dt, steps_ % 2 == 0, void_node_mass_, cells_, nodes_);
   removed_mass_ += report.remap.removed_mass;
+  discharge_.book(time_ + dt, report.remap.outflow_mass, report.remap.outflow_momentum);
   cell_updates_ += static_cast<long>(active_.size());
   time_ += dt;
   dt_previous_ = dt;

@@ -3,14 +3,19 @@
 // Lagrangian phase (forces, central-difference velocities, hypoplastic update per active cell)
 // and the donor-cell remap back to the fixed grid, followed by the blow-up guard
 // (models.md 2.2-2.5, 5.2). Gravity may be ramped by a smooth step, as the seed deck did.
+// Rigid walls at any angle act on the nodes after the velocity update (wall_contact, 2.6 C1);
+// mass leaving through outflow box faces is booked in the discharge ledger (2.7).
 #include <cstddef>
 #include <vector>
 
 #include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/discharge_ledger.hpp"
 #include "fullsim/cel/donor_cell_remap.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/rigid_wall.hpp"
 #include "fullsim/cel/stable_time_step.hpp"
+#include "fullsim/cel/wall_contact.hpp"
 #include "models/hypoplastic/material_point_integrator.hpp"
 
 namespace feedflow::cel {
@@ -20,6 +25,8 @@ struct CelOptions {
   TimeStepOptions time_step{};
   SubsteppingOptions substepping{};
   BoxWalls walls{};
+  std::vector<RigidWall> rigid_walls{};  // signed-distance walls with Coulomb friction
+  WallContactOptions contact{};
   NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
   // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic
@@ -46,13 +53,15 @@ struct CelStepReport {
   int unconverged_cells = 0;
   RemapReport remap{};
   NodeVector dropped_momentum = NodeVector::Zero();  // on void nodes in the Lagrangian phase
+  std::vector<NodeVector> wall_forces{};  // on the material, per rigid wall present [N/m]
 };
 
 class CelSolver {
  public:
   CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model, const CelOptions& options);
 
-  // Adds material to the cells the block overlaps (volume fraction = overlapped area share).
+  // Adds material to the cells the block overlaps (volume fraction = overlapped area share),
+  // except cells whose centre lies inside a rigid wall present at the current time.
   void add_material(const MaterialBlock& block);
   void set_solid(std::size_t cell);
   // Gives every node that carries mass the velocity v.
@@ -76,7 +85,8 @@ class CelSolver {
   double total_mass() const;          // [kg/m]
   NodeVector total_momentum() const;  // nodal [kg m/s /m]
   double kinetic_energy() const;      // nodal [J/m]
-  double removed_mass() const { return removed_mass_; }
+  double removed_mass() const { return removed_mass_; }  // below the volume-fraction cut
+  const DischargeLedger& discharge() const { return discharge_; }  // through outflow faces
   NodeVector centre_of_mass() const;  // [m]
 
  private:
@@ -98,6 +108,7 @@ class CelSolver {
   long steps_ = 0;
   long cell_updates_ = 0;
   double removed_mass_ = 0.0;
+  DischargeLedger discharge_;
 };
 
 }  // namespace feedflow::cel

@@ -9,28 +9,35 @@ namespace feedflow::cel {
 namespace {
 
 // A face normal to `axis` (0: x, 1: y) between cell `lo` and cell `hi` (the next one along the
-// axis): its two nodes and the two cells. `along` counts node lines along the axis (1..n-1),
-// `across` the cell line.
+// axis): its two nodes and the two cells. `along` counts node lines along the axis (0..n; the
+// box faces 0 and n have one cell outside, kOutside), `across` the cell line.
+constexpr std::size_t kOutside = static_cast<std::size_t>(-1);
+
 struct Face {
   std::size_t lo, hi, node_a, node_b;
 };
 
 Face face(const PlaneStrainGrid& g, int axis, int along, int across) {
+  const int n_along = axis == 0 ? g.nx : g.ny;
+  const auto cell = [&](int k) {
+    if (k < 0 || k >= n_along) return kOutside;
+    return axis == 0 ? g.cell(k, across) : g.cell(across, k);
+  };
   if (axis == 0)
-    return {g.cell(along - 1, across), g.cell(along, across), g.node(along, across),
-            g.node(along, across + 1)};
-  return {g.cell(across, along - 1), g.cell(across, along), g.node(across, along),
-          g.node(across + 1, along)};
+    return {cell(along - 1), cell(along), g.node(along, across), g.node(along, across + 1)};
+  return {cell(along - 1), cell(along), g.node(across, along), g.node(across + 1, along)};
 }
 
 std::size_t node_on_line(const PlaneStrainGrid& g, int axis, int along, int across) {
   return axis == 0 ? g.node(along, across) : g.node(across, along);
 }
 
+bool is_solid(const CellFields& cells, std::size_t c) { return c != kOutside && cells.solid[c]; }
+
 // Transport volume through a face, positive towards `hi` [m^3/m].
 double transport_volume(const PlaneStrainGrid& g, const NodeFields& nodes, const Face& f, int axis,
                         double dt, const CellFields& cells) {
-  if (cells.solid[f.lo] || cells.solid[f.hi]) return 0.0;
+  if (is_solid(cells, f.lo) || is_solid(cells, f.hi)) return 0.0;
   return dt * g.face_area() * 0.5 * (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
 }
 
@@ -49,8 +56,8 @@ void DonorCellRemap::Contents::resize(std::size_t n) {
   stress_volume.assign(n, Eigen::Matrix3d::Zero());
 }
 
-double DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis, const CellFields& cells,
-                             const NodeFields& nodes) {
+DonorCellRemap::SweepResult DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis,
+                                                  const CellFields& cells, const NodeFields& nodes) {
   const int n_along = axis == 0 ? g.nx : g.ny;
   const int n_across = axis == 0 ? g.ny : g.nx;
   zero(delta_.volume, 0.0);
@@ -59,30 +66,34 @@ double DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis, cons
   zero(delta_.void_mass, 0.0);
   zero(delta_.stress_volume, Eigen::Matrix3d::Zero().eval());
   face_mass_flux_.assign(static_cast<std::size_t>(n_across) * (n_along + 1), 0.0);
-  double worst = 0.0;
+  const int k_first = outflow_lo_[axis] ? 0 : 1;
+  const int k_last = outflow_hi_[axis] ? n_along : n_along - 1;
+  double worst = 0.0, outflow = 0.0;
   // Lines across the sweep direction are independent: each touches its own cells only.
-#pragma omp parallel for schedule(static) reduction(max : worst) if (g.cell_count() > 8192)
+#pragma omp parallel for schedule(static) reduction(max : worst) reduction(+ : outflow) \
+    if (g.cell_count() > 8192)
   for (int m = 0; m < n_across; ++m) {
-    for (int k = 1; k < n_along; ++k) {
+    for (int k = k_first; k <= k_last; ++k) {
       const Face f = face(g, axis, k, m);
       const double dv = transport_volume(g, nodes, f, axis, dt, cells);
       if (dv == 0.0) continue;
       const std::size_t donor = dv > 0.0 ? f.lo : f.hi;
+      const auto exchange = [&](auto& d, const auto& amount) {
+        if (f.lo != kOutside) d[f.lo] -= amount;
+        if (f.hi != kOutside) d[f.hi] += amount;
+      };
+      exchange(delta_.volume, dv);
+      if (donor == kOutside) continue;  // void enters through an outflow face
       const double share = std::abs(dv) / now_.volume[donor];
       worst = std::max(worst, share);
       const double moved = dv > 0.0 ? share : -share;  // signed share, lo -> hi positive
-      const auto move = [&](auto& d, const auto& src) {
-        const auto flux = moved * src[donor];
-        d[f.lo] -= flux;
-        d[f.hi] += flux;
-      };
-      delta_.volume[f.lo] -= dv;
-      delta_.volume[f.hi] += dv;
-      move(delta_.material_volume, now_.material_volume);
-      move(delta_.mass, now_.mass);
-      move(delta_.void_mass, now_.void_mass);
+      const auto move = [&](auto& d, const auto& src) { exchange(d, (moved * src[donor]).eval()); };
+      exchange(delta_.material_volume, moved * now_.material_volume[donor]);
+      exchange(delta_.mass, moved * now_.mass[donor]);
+      exchange(delta_.void_mass, moved * now_.void_mass[donor]);
       move(delta_.stress_volume, now_.stress_volume);
       face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k] = moved * now_.mass[donor];
+      if (f.lo == kOutside || f.hi == kOutside) outflow += share * now_.mass[donor];
     }
   }
   const std::size_t n = g.cell_count();
@@ -93,10 +104,10 @@ double DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis, cons
     now_.void_mass[c] += delta_.void_mass[c];
     now_.stress_volume[c] += delta_.stress_volume[c];
   }
-  return worst;
+  return {worst, outflow};
 }
 
-void DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
+NodeVector DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   const int n_along = axis == 0 ? g.nx : g.ny;    // cells along the axis
   const int n_across = axis == 0 ? g.ny : g.nx;   // cell lines
   zero(node_mass_delta_, 0.0);
@@ -123,28 +134,51 @@ void DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
       node_momentum_delta_[hi] += phi * v;
     }
   }
+  // Outflow faces: a boundary node lumps a quarter of each neighbouring boundary cell, so it gives
+  // half of their face fluxes (leaving at its own velocity); only outward fluxes are non-zero.
+  NodeVector outflow = NodeVector::Zero();
+  for (int line = 0; line <= n_across; ++line) {
+    for (int k : {0, n_along}) {
+      double phi = 0.0;  // leaving the grid
+      for (int m = line - 1; m <= line; ++m)
+        if (m >= 0 && m < n_across) phi += 0.5 * (k == 0 ? -flux(m, k) : flux(m, k));
+      if (phi == 0.0) continue;
+      const std::size_t a = node_on_line(g, axis, k, line);
+      const NodeVector p = node_mass_[a] > 0.0 ? NodeVector(phi * node_momentum_[a] / node_mass_[a])
+                                               : NodeVector::Zero();
+      node_mass_delta_[a] -= phi;
+      node_momentum_delta_[a] -= p;
+      outflow += p;
+    }
+  }
   for (std::size_t a = 0; a < g.node_count(); ++a) {
     node_mass_[a] += node_mass_delta_[a];
     node_momentum_[a] += node_momentum_delta_[a];
   }
+  return outflow;
 }
 
-RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, double dt, bool x_first,
-                                  double void_node_mass, CellFields& cells, NodeFields& nodes) {
+RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, const BoxWalls& walls, double dt,
+                                  bool x_first, double void_node_mass, CellFields& cells,
+                                  NodeFields& nodes) {
+  outflow_lo_[0] = walls.left == WallCondition::outflow;
+  outflow_hi_[0] = walls.right == WallCondition::outflow;
+  outflow_lo_[1] = walls.bottom == WallCondition::outflow;
+  outflow_hi_[1] = walls.top == WallCondition::outflow;
   const std::size_t n = g.cell_count();
   now_.resize(n);
   delta_.resize(n);
   const double v0 = g.cell_volume();
-  // The Lagrangian cell: V^L = V + the outward transport volumes of its interior faces.
+  // The Lagrangian cell: V^L = V + the outward transport volumes of its flux-carrying faces.
   for (std::size_t c = 0; c < n; ++c) now_.volume[c] = v0;
   for (int axis = 0; axis < kDimension; ++axis) {
     const int n_along = axis == 0 ? g.nx : g.ny, n_across = axis == 0 ? g.ny : g.nx;
     for (int m = 0; m < n_across; ++m)
-      for (int k = 1; k < n_along; ++k) {
+      for (int k = outflow_lo_[axis] ? 0 : 1; k <= (outflow_hi_[axis] ? n_along : n_along - 1); ++k) {
         const Face f = face(g, axis, k, m);
         const double dv = transport_volume(g, nodes, f, axis, dt, cells);
-        now_.volume[f.lo] += dv;
-        now_.volume[f.hi] -= dv;
+        if (f.lo != kOutside) now_.volume[f.lo] += dv;
+        if (f.hi != kOutside) now_.volume[f.hi] -= dv;
       }
   }
   for (std::size_t c = 0; c < n; ++c) {
@@ -163,8 +197,10 @@ RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, double dt, bool x_fi
   RemapReport report;
   const int first = x_first ? 0 : 1;
   for (int axis : {first, 1 - first}) {
-    report.max_outflow_fraction = std::max(report.max_outflow_fraction, sweep(g, dt, axis, cells, nodes));
-    sweep_momentum(g, axis);
+    const SweepResult r = sweep(g, dt, axis, cells, nodes);
+    report.max_outflow_fraction = std::max(report.max_outflow_fraction, r.worst_share);
+    report.outflow_mass += r.outflow_mass;
+    report.outflow_momentum += sweep_momentum(g, axis);
   }
 
   for (std::size_t c = 0; c < n; ++c) {

@@ -5,8 +5,10 @@
 // sweep whose order alternates every step. A face's transport volume is dt h times the mean
 // normal velocity of its two nodes; the donor (upwind) cell gives that fraction of its current
 // (intermediate) volume of every content. Every flux leaves one cell and enters its neighbour,
-// so mass, material volume and cell momentum are conserved to round-off; the box faces and the
-// faces of solid cells carry no flux.
+// so mass, material volume and cell momentum are conserved to round-off; the faces of solid
+// cells carry no flux, nor do the box faces except outflow faces: there the boundary cell is the
+// donor of an outward flux (the mass and momentum leave the grid and are reported), an inward
+// flux brings void only.
 //
 // Momentum: half-index shift (Benson 1992). Nodes are the cells of the dual grid; the mass flux
 // through a dual face (at a cell centre) is half the sum of that cell's two primal face fluxes,
@@ -16,6 +18,7 @@
 // overshoot at nodes that lose most of their mass).
 #include <vector>
 
+#include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
 
 namespace feedflow::cel {
@@ -24,6 +27,8 @@ struct RemapReport {
   double max_outflow_fraction = 0.0;  // largest share of a donor's volume given in one sweep
   double removed_mass = 0.0;          // in cells that fell below the volume-fraction cut [kg/m]
   NodeVector lost_momentum = NodeVector::Zero();  // on nodes that became void [kg m/s /m]
+  double outflow_mass = 0.0;                          // through outflow faces [kg/m]
+  NodeVector outflow_momentum = NodeVector::Zero();   // nodal, through outflow faces [kg m/s /m]
 };
 
 class DonorCellRemap {
@@ -33,8 +38,8 @@ class DonorCellRemap {
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
   // constraints applied.
-  RemapReport remap(const PlaneStrainGrid& grid, double dt, bool x_first, double void_node_mass,
-                    CellFields& cells, NodeFields& nodes);
+  RemapReport remap(const PlaneStrainGrid& grid, const BoxWalls& walls, double dt, bool x_first,
+                    double void_node_mass, CellFields& cells, NodeFields& nodes);
 
  private:
   struct Contents {
@@ -42,11 +47,16 @@ class DonorCellRemap {
     std::vector<Eigen::Matrix3d> stress_volume;
     void resize(std::size_t n);
   };
-  double sweep(const PlaneStrainGrid& grid, double dt, int axis, const CellFields& cells,
-               const NodeFields& nodes);
-  void sweep_momentum(const PlaneStrainGrid& grid, int axis);
+  struct SweepResult {
+    double worst_share = 0.0, outflow_mass = 0.0;
+  };
+  SweepResult sweep(const PlaneStrainGrid& grid, double dt, int axis, const CellFields& cells,
+                    const NodeFields& nodes);
+  NodeVector sweep_momentum(const PlaneStrainGrid& grid, int axis);  // returns the outflow
 
   double cut_;
+  bool outflow_lo_[kDimension] = {false, false};  // left, bottom
+  bool outflow_hi_[kDimension] = {false, false};  // right, top
   Contents now_, delta_;
   std::vector<double> face_mass_flux_;  // of the last sweep, per line (n_along + 1 faces) [kg/m]
   std::vector<double> node_mass_, node_mass_delta_;

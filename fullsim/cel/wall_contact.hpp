@@ -1,0 +1,39 @@
+#pragma once
+// Grid-node kinematic contact with rigid walls and Coulomb friction (models.md 2.6, option C1,
+// as for rigid walls in MPM): after the free velocity update every node with mass closer to a
+// wall than the contact distance d_c loses the velocity component into the wall (relative to the
+// wall's own velocity); the tangential component sticks if |v_t| <= mu |v_n| and is otherwise
+// reduced by mu |v_n| (no slip: always sticks). The wall reaction m (v* - v) / dt is booked per
+// wall. Cells whose four corners all lie inside the walls are solid (no material, no transport);
+// cut cells hold material. No penalty parameter, no time-step restriction.
+#include <cstddef>
+#include <vector>
+
+#include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/rigid_wall.hpp"
+
+namespace feedflow::cel {
+
+struct WallContactOptions {
+  double contact_distance = 0.5;  // d_c as a fraction of the cell size h
+};
+
+// The walls present at time t.
+std::vector<PlacedWall> place_walls(const std::vector<RigidWall>& walls, double t);
+
+// Smallest signed distance of x to the placed walls (+infinity without walls) [m].
+double distance_to_walls(const std::vector<PlacedWall>& walls, const Eigen::Vector2d& x);
+
+// Applies the contact to the nodes heavier than void_node_mass; returns the reaction force of
+// each placed wall on the material (same order as `walls`) [N/m].
+std::vector<NodeVector> apply_wall_contact(const PlaneStrainGrid& grid,
+                                           const std::vector<PlacedWall>& walls,
+                                           const WallContactOptions& options, double dt,
+                                           double void_node_mass, NodeFields& nodes);
+
+// Marks empty cells whose corners are all inside the walls kSolidInsideWall and releases
+// wall cells no longer inside (moved or removed walls); kSolidFixed cells stay.
+void mark_wall_cells(const PlaneStrainGrid& grid, const std::vector<PlacedWall>& walls,
+                     CellFields& cells);
+
+}  // namespace feedflow::cel
