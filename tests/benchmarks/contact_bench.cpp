@@ -6,27 +6,13 @@
 #include <vector>
 
 #include "models/contact/contact_law_registry.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace {
 
 using namespace feedflow;
 
-DemContactParameters pine_contact() {  // seed Table 2, P-P
-  DemContactParameters p;
-  p.alpha_prime = 20;
-  p.chi = 2;
-  p.a1 = 6e8;
-  p.a2 = 5e4;
-  p.a3 = 5;
-  p.k_nc = 1e-4;
-  p.c = 1e-7;
-  p.youngs_modulus = 1e6;
-  p.poisson_ratio = 0.3;
-  p.restitution = 0.3;
-  p.friction = 0.5;
-  p.rolling_friction = 0.8;
-  return p;
-}
+DemContactParameters pine_contact() { return testing::pine_table2_particle_particle(); }  // seed Table 2, P-P
 
 std::vector<ContactInput> contacts(std::size_t n) {
   std::vector<ContactInput> in(n);

@@ -16,26 +16,14 @@
 #include <sstream>
 
 #include "fullsim/dem/dem_engine.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace {
 
 using namespace feedflow;
 
 DemContactParameters pine(double friction, double rolling_friction) {  // seed Table 2
-  DemContactParameters p;
-  p.alpha_prime = 20;
-  p.chi = 2;
-  p.a1 = 6e8;
-  p.a2 = 5e4;
-  p.a3 = 5;
-  p.k_nc = 1e-4;
-  p.c = 1e-7;
-  p.youngs_modulus = 1e6;
-  p.poisson_ratio = 0.3;
-  p.restitution = 0.3;
-  p.friction = friction;
-  p.rolling_friction = rolling_friction;
-  return p;
+  return testing::pine_table2_contact(friction, rolling_friction);
 }
 
 constexpr int kNx = 40, kNy = 25, kNz = 30;  // 30 000 spheres

@@ -9,25 +9,13 @@
 #include "models/contact/contact_law_registry.hpp"
 #include "models/contact/contact_time_step.hpp"
 #include "models/core/errors.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
 
 DemContactParameters pine_contact(double friction, double rolling) {  // seed Table 2
-  DemContactParameters p;
-  p.alpha_prime = 20;
-  p.chi = 2;
-  p.a1 = 6e8;
-  p.a2 = 5e4;
-  p.a3 = 5;
-  p.k_nc = 1e-4;
-  p.c = 1e-7;
-  p.youngs_modulus = 1e6;
-  p.poisson_ratio = 0.3;
-  p.restitution = 0.3;
-  p.friction = friction;
-  p.rolling_friction = rolling;
-  return p;
+  return testing::pine_table2_contact(friction, rolling);
 }
 
 DemParameters pine() {

@@ -11,6 +11,7 @@
 #include "models/contact/hysteretic_nonlinear2.hpp"
 #include "models/core/gravity.hpp"
 #include "tests/models/contact/single_contact_rig.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
@@ -18,22 +19,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDt = 1e-6;
 
-DemContactParameters pine_wall() {  // seed Table 2, P-W column
-  DemContactParameters p;
-  p.alpha_prime = 20;
-  p.chi = 2;
-  p.a1 = 6e8;
-  p.a2 = 5e4;
-  p.a3 = 5;
-  p.k_nc = 1e-4;
-  p.c = 1e-7;
-  p.youngs_modulus = 1e6;
-  p.poisson_ratio = 0.3;
-  p.restitution = 0.3;
-  p.friction = 0.2;
-  p.rolling_friction = 0.6;
-  return p;
-}
+DemContactParameters pine_wall() { return testing::pine_table2_particle_wall(); }  // seed Table 2, P-W
 
 struct InclineRun {
   Vec3 x_mid = Vec3::Zero(), x_end = Vec3::Zero();  // position at half time and at the end
