@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 
+#include "fullsim/dem/wall.hpp"
 #include "models/core/errors.hpp"
 
 namespace feedflow {
@@ -213,17 +214,7 @@ std::string MeshWall::describe() const {
                 name_.c_str(), mesh_.source.empty() ? "code" : mesh_.source.c_str(), mesh_.triangles.size(),
                 mesh_.vertices.size(), mesh_.degenerate.size(), dims_[0], dims_[1], dims_[2], cell_);
   std::string s = buf;
-  if (moves()) {
-    std::snprintf(buf, sizeof buf, ", moving v = (%.3g, %.3g, %.3g) m/s, omega = (%.3g, %.3g, %.3g) rad/s",
-                  velocity_.x(), velocity_.y(), velocity_.z(), angular_velocity_.x(),
-                  angular_velocity_.y(), angular_velocity_.z());
-    s += buf;
-  }
-  if (std::isfinite(removal_time_)) {
-    std::snprintf(buf, sizeof buf, ", removed at t = %.4g s", removal_time_);
-    s += buf;
-  }
-  return s;
+  return s + wall_motion_text(velocity_, angular_velocity_, removal_time_);
 }
 
 }  // namespace feedflow

@@ -51,6 +51,22 @@ void Wall::advance(double dt) {
     direction_ = (Eigen::AngleAxisd(turn, angular_velocity_.normalized()) * direction_).normalized();
 }
 
+std::string wall_motion_text(const Vec3& velocity, const Vec3& angular_velocity, double removal_time) {
+  std::string s;
+  char buf[160];
+  if (velocity.squaredNorm() > 0.0 || angular_velocity.squaredNorm() > 0.0) {
+    std::snprintf(buf, sizeof buf, ", moving v = (%.3g, %.3g, %.3g) m/s, omega = (%.3g, %.3g, %.3g) rad/s",
+                  velocity.x(), velocity.y(), velocity.z(), angular_velocity.x(), angular_velocity.y(),
+                  angular_velocity.z());
+    s += buf;
+  }
+  if (std::isfinite(removal_time)) {
+    std::snprintf(buf, sizeof buf, ", removed at t = %.4g s", removal_time);
+    s += buf;
+  }
+  return s;
+}
+
 std::string Wall::describe() const {
   char buf[256];
   if (shape_ == WallShape::plane)
@@ -62,17 +78,7 @@ std::string Wall::describe() const {
                   name_.c_str(), radius_, direction_.x(), direction_.y(), direction_.z(),
                   inside_ ? "inside" : "outside");
   std::string s = buf;
-  if (moves()) {
-    std::snprintf(buf, sizeof buf, ", moving v = (%.3g, %.3g, %.3g) m/s, omega = (%.3g, %.3g, %.3g) rad/s",
-                  velocity_.x(), velocity_.y(), velocity_.z(), angular_velocity_.x(),
-                  angular_velocity_.y(), angular_velocity_.z());
-    s += buf;
-  }
-  if (std::isfinite(removal_time_)) {
-    std::snprintf(buf, sizeof buf, ", removed at t = %.4g s", removal_time_);
-    s += buf;
-  }
-  return s;
+  return s + wall_motion_text(velocity_, angular_velocity_, removal_time_);
 }
 
 }  // namespace feedflow

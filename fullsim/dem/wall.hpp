@@ -89,4 +89,8 @@ class Wall {
   double removal_time_ = std::numeric_limits<double>::infinity();
 };
 
+// ", moving v = (...) m/s, omega = (...) rad/s, removed at t = ... s" for a wall's plan line;
+// empty for a wall that stays put for the whole run.
+std::string wall_motion_text(const Vec3& velocity, const Vec3& angular_velocity, double removal_time);
+
 }  // namespace feedflow
