@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add_version_command(app, exit_code);
   add_report_command(app, exit_code);
   add_element_test_command(app, exit_code);
+  add_simulate_command(app, exit_code);
   add_reserved_commands(app, exit_code);
 
   try {

@@ -13,7 +13,9 @@ void add_version_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 // element-test: laboratory element tests of a material's hypoplastic law (CSV + JSON summary).
 void add_element_test_command(CLI::App& app, int& exit_code);
-// simulate, sweep, bench: reserved names that say "not yet available".
+// simulate: a full simulation (DEM or CEL-FEM) of a case, results JSON and time series.
+void add_simulate_command(CLI::App& app, int& exit_code);
+// sweep, bench: reserved names that say "not yet available".
 void add_reserved_commands(CLI::App& app, int& exit_code);
 
 }  // namespace feedflow

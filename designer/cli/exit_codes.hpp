@@ -7,6 +7,7 @@ enum ExitCode : int {
   kExitBadInput = 2,        // usage, case file, units, ranges
   kExitNotAvailable = 3,    // a command this build does not have yet
   kExitNumericalFailure = 4,
+  kExitInterrupted = 130,   // Ctrl-C: a checkpoint was written (128 + SIGINT)
 };
 
 }  // namespace feedflow

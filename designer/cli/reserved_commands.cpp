@@ -12,7 +12,6 @@ struct Reserved {
 };
 
 constexpr Reserved kReserved[] = {
-    {"simulate", "verify a case with a full simulation (DEM or CEL-FEM)"},
     {"sweep", "run a what-if sweep over case values"},
     {"bench", "benchmark run time against error for the solvers"},
 };

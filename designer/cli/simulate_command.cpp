@@ -1,0 +1,145 @@
+// feedflow simulate <case> [--solver dem|cel] [--time 2s] [--out DIR] [--restart FILE]:
+// verifies a case with a full simulation and writes results.json (rung L3 or L2),
+// results.txt, timeseries.csv and the solver's snapshots and checkpoints.
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <unistd.h>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/cli/command_options.hpp"
+#include "designer/cli/commands.hpp"
+#include "designer/cli/exit_codes.hpp"
+#include "designer/cli/invocation.hpp"
+#include "designer/cli/output_files.hpp"
+#include "designer/design/case_inputs.hpp"
+#include "designer/simulate/cel_simulation.hpp"
+#include "designer/simulate/dem_simulation.hpp"
+#include "designer/simulate/solver_choice.hpp"
+#include "fullsim/common/atomic_file.hpp"
+#include "fullsim/common/interrupt_request.hpp"
+#include "models/core/errors.hpp"
+#include "models/core/version.hpp"
+#include "models/units/quantity_parser.hpp"
+#include "reports/results_json.hpp"
+#include "reports/text_summary.hpp"
+#include "reports/time_series_csv.hpp"
+
+namespace feedflow {
+namespace {
+
+struct SimulateArguments {
+  std::string case_file;
+  CommandOptions options;
+  std::string solver;   // empty: chosen by the seed's rule
+  std::string time;     // "2 s"; empty: the scene's own end
+  std::string restart;  // checkpoint file
+};
+
+std::filesystem::path output_folder(const SimulateArguments& args, const Case& c, Solver solver) {
+  if (!args.options.out.empty()) return args.options.out;
+  return std::filesystem::path("out") / (c.name + "_" + to_string(solver));
+}
+
+int run_simulate(const SimulateArguments& args) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SetOverride> overrides;
+  for (const auto& s : args.options.sets) overrides.push_back(parse_set_override(s));
+  std::optional<Solver> asked;
+  if (!args.solver.empty()) asked = parse_solver(args.solver);
+  std::optional<double> end_time;
+  if (!args.time.empty()) {
+    try {
+      end_time = parse_quantity_as(args.time, dim::time, false);
+    } catch (const UnitError& e) {
+      throw InputError("--time", "", e.what());
+    }
+    if (!(*end_time > 0.0)) throw InputError("--time", "", "the simulated time must be > 0 s, e.g. 2 s");
+  }
+  if (!args.restart.empty() && !std::filesystem::is_regular_file(args.restart))
+    throw InputError("--restart", "", "no such checkpoint file: " + args.restart);
+
+  const Case c = load_case(args.case_file, overrides);
+  if (!args.options.quiet)
+    for (const auto& w : c.warnings) std::cerr << "feedflow: warning: " << w << '\n';
+  const SolverChoice choice = choose_solver(c, asked);
+
+  SimulationRequest request;
+  request.case_data = c;
+  request.solver = choice.solver;
+  request.end_time = end_time;
+  request.out = output_folder(args, c, choice.solver);
+  request.restart = args.restart;
+  request.progress = !args.options.quiet && isatty(STDERR_FILENO);
+  request.log = args.options.human_output() ? &std::cout : nullptr;
+  try {
+    std::filesystem::create_directories(request.out);
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw InputError("--out", "", std::string("cannot create the output folder: ") + e.what());
+  }
+  if (request.log) *request.log << "feedflow simulate: " << choice.reason << '\n';
+
+  install_interrupt_handler();
+  SimulationOutcome outcome = choice.solver == Solver::dem ? simulate_with_dem(request)
+                                                           : simulate_with_cel(request);
+  DesignRecord& record = outcome.record;
+  record.feedflow_version = kVersion;
+  record.case_name = c.name;
+  record.kind = c.kind();
+  record.case_file = c.file;
+  record.description = c.description;
+  record.inputs = case_inputs(c);
+  record.assumptions.insert(record.assumptions.begin(), choice.reason);
+  record.command_line = invocation();
+  record.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::string summary = text_summary(record);
+  const std::string json = to_json(record).dump(2) + "\n";
+  auto written = write_run_outputs(request.out, json, summary, args.options);
+  if (!outcome.series.empty()) {
+    const auto csv = request.out / "timeseries.csv";
+    write_file_atomically(csv, to_csv(outcome.series));
+    written.push_back(csv);
+  }
+  for (auto& f : outcome.files) written.push_back(std::move(f));
+
+  if (args.options.human_output()) {
+    std::cout << summary << "\nWritten: ";
+    for (std::size_t i = 0; i < written.size(); ++i)
+      std::cout << (i ? ", " : "") << written[i].string();
+    std::cout << '\n';
+  }
+  if (outcome.end == SimulationEnd::interrupted) {
+    std::cerr << "feedflow: interrupted; continue with --restart and the checkpoint listed above\n";
+    return kExitInterrupted;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<SimulateArguments>();
+  auto* command = app.add_subcommand(
+      "simulate", "verify a case with a full simulation: particles (DEM) or continuum (CEL-FEM)");
+  command->add_option("case", args->case_file, "case file (TOML), e.g. cases/rotating_drum_20rpm.toml")
+      ->required()
+      ->type_name("CASE");
+  command->add_option("--solver", args->solver,
+                      "dem (particles, rung L3) or cel (CEL-FEM continuum, rung L2); default: "
+                      "the seed's rule (continuum for hoppers and chutes, particles for drums)")
+      ->type_name("NAME");
+  command->add_option("--time", args->time,
+                      "simulated time after filling, with its unit (e.g. 2s); default: until the "
+                      "measured quantity has converged or the flow has stopped")
+      ->type_name("TIME");
+  command->add_option("--restart", args->restart, "continue the run saved in this checkpoint")
+      ->type_name("FILE");
+  add_case_options(*command, args->options);
+  command->callback([args, &exit_code] { exit_code = run_simulate(*args); });
+}
+
+}  // namespace feedflow

@@ -1,0 +1,40 @@
+#pragma once
+// What `feedflow simulate` asks of a full simulation, and what one gives back. The solvers'
+// front ends (dem_simulation.hpp, cel_simulation.hpp) build a scene from the case, run it and
+// measure the design quantities; the command writes the files.
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "designer/case/case.hpp"
+#include "models/core/design_record.hpp"
+#include "models/core/time_series.hpp"
+
+namespace feedflow {
+
+enum class Solver { dem, cel };
+const char* to_string(Solver solver);
+
+struct SimulationRequest {
+  Case case_data;
+  Solver solver = Solver::dem;
+  std::optional<double> end_time;   // --time [s]; none: the scene's own end (converged, stopped)
+  std::filesystem::path out;        // output folder (exists when the solver is called)
+  std::filesystem::path restart;    // checkpoint to continue from; empty: a new run
+  bool progress = true;             // progress line with ETA on a terminal
+  std::ostream* log = nullptr;      // plan, phases and performance block; null: silent
+};
+
+enum class SimulationEnd { completed, interrupted };
+
+struct SimulationOutcome {
+  // Results (rung "L3" for DEM, "L2" for CEL-FEM), verdict, charts and assumptions; inputs
+  // and provenance are filled in by the command.
+  DesignRecord record;
+  TimeSeries series;                              // written as timeseries.csv
+  std::vector<std::filesystem::path> files;       // snapshots, sidecars, checkpoints written
+  SimulationEnd end = SimulationEnd::completed;   // interrupted: a checkpoint was written
+};
+
+}  // namespace feedflow
