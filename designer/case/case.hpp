@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "designer/case/simulation_settings.hpp"
 #include "models/core/design_record.hpp"
 #include "models/equipment/chute.hpp"
 #include "models/equipment/design_targets.hpp"
@@ -21,6 +22,8 @@ struct Case {
   Material material;
   std::variant<Hopper, Chute, Drum> equipment;
   DesignTargets design;
+  DemCaseSettings dem;  // [dem]: how `feedflow simulate --solver dem` runs the case
+  CelCaseSettings cel;  // [cel]: how `feedflow simulate --solver cel` runs the case
   std::vector<std::string> warnings;  // accepted, but the engineer should know
 
   EquipmentKind kind() const { return static_cast<EquipmentKind>(equipment.index()); }

@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kRootKeys[] = {"case", "material", "hopper", "chute", "drum", "design"};
+constexpr std::string_view kRootKeys[] = {"case", "material", "hopper", "chute",
+                                           "drum", "design", "dem", "cel"};
 constexpr std::string_view kCaseKeys[] = {"name", "description", "material"};
 constexpr std::string_view kEquipmentKeys[] = {"hopper", "chute", "drum"};
 constexpr const char* kDefaultMaterial = "loblolly_pine";
@@ -185,6 +186,10 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
     read_fields(*design, design_target_fields(), c.design, ctx);
     raise_problems(check(c.design, c.kind(), keys), *design, ctx, &c.warnings);
   }
+  if (const toml::table* dem = table_at(root, "dem", path))
+    read_fields(*dem, dem_case_fields(), c.dem, TableContext{"dem", path});
+  if (const toml::table* cel = table_at(root, "cel", path))
+    read_fields(*cel, cel_case_fields(), c.cel, TableContext{"cel", path});
   return c;
 }
 

@@ -74,6 +74,7 @@ int run_simulate(const SimulateArguments& args) {
   request.restart = args.restart;
   request.progress = !args.options.quiet && isatty(STDERR_FILENO);
   request.log = args.options.human_output() ? &std::cout : nullptr;
+  const bool folder_is_new = !std::filesystem::exists(request.out);
   try {
     std::filesystem::create_directories(request.out);
   } catch (const std::filesystem::filesystem_error& e) {
@@ -82,8 +83,15 @@ int run_simulate(const SimulateArguments& args) {
   if (request.log) *request.log << "feedflow simulate: " << choice.reason << '\n';
 
   install_interrupt_handler();
-  SimulationOutcome outcome = choice.solver == Solver::dem ? simulate_with_dem(request)
-                                                           : simulate_with_cel(request);
+  SimulationOutcome outcome;
+  try {
+    outcome = choice.solver == Solver::dem ? simulate_with_dem(request) : simulate_with_cel(request);
+  } catch (...) {
+    std::error_code ignored;  // a run that failed before writing anything leaves no empty folder
+    if (folder_is_new && std::filesystem::is_empty(request.out, ignored))
+      std::filesystem::remove(request.out, ignored);
+    throw;
+  }
   DesignRecord& record = outcome.record;
   record.feedflow_version = kVersion;
   record.case_name = c.name;

@@ -1,0 +1,37 @@
+#include "designer/case/simulation_settings.hpp"
+
+namespace feedflow {
+
+std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
+  using S = DemCaseSettings;
+  static const FieldSpec<S> fields[] = {
+      optional_number_field<S>("slab_depth", &S::slab_depth, dim::length, "mm",
+                               Range::positive(),
+                               "depth of the periodic slab (hopper 3 mm, chute 15 mm; drum: full length)"),
+      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", Range::positive(),
+                               "simulated time after filling (default: until converged or stopped)"),
+      optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
+                               Range::positive(), "time between particle snapshots"),
+      optional_number_field<S>("time_step", &S::time_step, dim::time, "us", Range::positive(),
+                               "time step instead of the stable one (smaller: warned)"),
+      optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
+                               Range::closed(0.0, 4294967295.0),
+                               "seed of the rain-fall insertion"),
+  };
+  return fields;
+}
+
+std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
+  using S = CelCaseSettings;
+  static const FieldSpec<S> fields[] = {
+      optional_number_field<S>("cell_size", &S::cell_size, dim::length, "mm", Range::positive(),
+                               "edge of the square Eulerian cells"),
+      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", Range::positive(),
+                               "simulated time after the gravity phase"),
+      optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
+                               Range::positive(), "time between field snapshots"),
+  };
+  return fields;
+}
+
+}  // namespace feedflow

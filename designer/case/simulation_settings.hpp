@@ -1,0 +1,28 @@
+#pragma once
+// The optional [dem] and [cel] tables of a case file: how a full simulation of the case is
+// run. Every field is optional; an absent one takes the scene's default (stated in its plan).
+#include <optional>
+#include <span>
+
+#include "models/core/field_spec.hpp"
+
+namespace feedflow {
+
+struct DemCaseSettings {
+  std::optional<double> slab_depth;         // [m] periodic slab depth; none: the scene's default
+  std::optional<double> end_time;           // [s] simulated time after filling (--time wins)
+  std::optional<double> snapshot_interval;  // [s] between HDF5 particle snapshots
+  std::optional<double> time_step;          // [s] below the stable step (warned) or forced
+  std::optional<double> random_seed;        // [-] of the rain-fall insertion
+};
+
+struct CelCaseSettings {
+  std::optional<double> cell_size;          // [m] edge of the square Eulerian cells
+  std::optional<double> end_time;           // [s] simulated time after the gravity phase
+  std::optional<double> snapshot_interval;  // [s] between HDF5 field snapshots
+};
+
+std::span<const FieldSpec<DemCaseSettings>> dem_case_fields();
+std::span<const FieldSpec<CelCaseSettings>> cel_case_fields();
+
+}  // namespace feedflow
