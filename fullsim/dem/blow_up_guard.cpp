@@ -7,9 +7,10 @@
 
 namespace feedflow {
 
-void BlowUpGuard::start(double kinetic_energy, double floor) {
+void BlowUpGuard::start(double kinetic_energy, double floor, double wall_speed) {
   initial_energy_ = kinetic_energy;
   floor_ = floor;
+  wall_speed_ = wall_speed;
   gravity_work_ = 0.0;
 }
 
@@ -42,7 +43,6 @@ void BlowUpGuard::check_state(const ParticleStore& p, double kinetic_energy, lon
           !p.angular_velocity[k].allFinite())
         fail("non-finite state", p, k, step);
   }
-  if (!check_energy_) return;
   const double allowed =
       limits_.energy_growth * (initial_energy_ + std::max(gravity_work_, 0.0)) + floor_;
   if (kinetic_energy > allowed && p.size() > 0) {
@@ -58,11 +58,17 @@ void BlowUpGuard::check_state(const ParticleStore& p, double kinetic_energy, lon
 }
 
 std::string BlowUpGuard::describe() const {
-  char buf[200];
-  std::snprintf(buf, sizeof buf, "blow-up guard: overlap > %.3g R%s", limits_.max_overlap_ratio,
-                check_energy_ ? "; kinetic energy > growth x (initial + gravity work)"
-                              : "; energy check off (moving walls feed energy)");
-  return buf;
+  char buf[300];
+  std::snprintf(buf, sizeof buf,
+                "blow-up guard: overlap > %.3g R; kinetic energy > %.3g x (initial + gravity "
+                "work) + %.4g J",
+                limits_.max_overlap_ratio, limits_.energy_growth, floor_);
+  std::string text = buf;
+  if (wall_speed_ > 0.0) {
+    std::snprintf(buf, sizeof buf, " (allows for moving walls up to %.3g m/s)", wall_speed_);
+    text += buf;
+  }
+  return text;
 }
 
 }  // namespace feedflow

@@ -80,6 +80,30 @@ void DemEngine::write_checkpoint(const std::filesystem::path& path) const {
   write_dem_checkpoint(path, checkpoint());
 }
 
+double DemEngine::fastest_wall_surface_speed() const {
+  double fastest = 0.0;
+  auto scan = [&](const auto& wall) {
+    if (!wall.moves()) return;
+    for (const Vec3& x : particles_.position)
+      fastest = std::max(fastest, wall.surface_velocity(x).norm());
+  };
+  for (const auto& w : walls_) scan(w);
+  for (const auto& m : meshes_) scan(m);
+  return fastest;
+}
+
+double DemEngine::bed_height() const {
+  const double g = settings_.gravity.norm();
+  if (g == 0.0 || particles_.size() == 0) return 0.0;
+  const Vec3 down = settings_.gravity / g;
+  double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+  for (const Vec3& x : particles_.position) {
+    lowest = std::min(lowest, x.dot(down));
+    highest = std::max(highest, x.dot(down));
+  }
+  return highest - lowest;
+}
+
 std::size_t DemEngine::wall_history_stride() const {
   // Per particle: one history per analytic wall, and per mesh wall kMaxContacts slots holding
   // the contact normal (3) and a history each.
@@ -156,10 +180,7 @@ void DemEngine::prepare(std::ostream& out) {
   const StableTimeStep stable = stable_time_step(dem, springs, settings_.time_step);
   time_step_ = choose_time_step(stable, settings_.requested_time_step, settings_.force_time_step);
 
-  bool walls_move = false;
-  for (const auto& w : walls_) walls_move = walls_move || w.moves();
-  for (const auto& m : meshes_) walls_move = walls_move || m.moves();
-  guard_ = BlowUpGuard(settings_.guard, stable.value, !walls_move);
+  guard_ = BlowUpGuard(settings_.guard, stable.value);
 
   if (pending_) {
     // A restored run keeps its list, forces and energy book as they were.
@@ -173,7 +194,16 @@ void DemEngine::prepare(std::ostream& out) {
     // Floor: every particle moving at the design speed of the time step (initial overlaps may
     // release elastic energy the guard cannot book).
     const double v_design = settings_.time_step.max_velocity;
-    guard_.start(particles_.kinetic_energy(), 0.5 * particles_.total_mass() * v_design * v_design);
+    const double mass = particles_.total_mass();
+    const double v_wall = fastest_wall_surface_speed();
+    double floor = 0.5 * mass * v_design * v_design;
+    if (v_wall > 0.0) {
+      // Walls that move feed energy: allow every grain carried at the fastest wall surface
+      // speed and dropped over the bed's height.
+      const double v = v_wall + std::sqrt(2.0 * settings_.gravity.norm() * bed_height());
+      floor += 0.5 * mass * v * v;
+    }
+    guard_.start(particles_.kinetic_energy(), floor, v_wall);
   }
   plan_ = make_plan();
   out << plan_;

@@ -110,6 +110,8 @@ class DemEngine {
   std::string make_plan() const;
   void restore_prepared_state();            // from pending_, in prepare()
   std::size_t wall_history_stride() const;  // wall-history doubles per particle
+  double fastest_wall_surface_speed() const;  // over the moving walls, at the particles [m/s]
+  double bed_height() const;                  // extent of the particles along gravity [m]
 
   DemSettings settings_;
   SimulationBox box_;
