@@ -30,7 +30,9 @@ class LawForces final : public ForceKernel {
   std::string name() const override { return Law::name(); }
   std::size_t history_size() const override { return kHistory; }
 
-  DeepestOverlap add_pair_forces(ForceContext& c) override {
+  // flatten: the composed law's parts (and Eigen's small-vector helpers) are inlined into the
+  // loop; left to the inliner's size limits they stayed out-of-line calls per contact.
+  [[gnu::flatten]] DeepestOverlap add_pair_forces(ForceContext& c) override {
     ParticleStore& p = c.particles;
     const std::size_t n = p.size();
 #ifdef _OPENMP
@@ -38,12 +40,28 @@ class LawForces final : public ForceKernel {
 #else
     const int threads = 1;
 #endif
-    // Thread t owns the rows [n t/T, n (t+1)/T): it adds into the particles' arrays for
-    // every body in its block, and queues the reaction on a body of another block (few, the
-    // slots being Morton-ordered); after a barrier each thread applies the queued reactions on
-    // its block in thread order. No atomics, no race, and deterministic for a thread count.
-    pending_.resize(static_cast<std::size_t>(threads));
-    std::vector<DeepestOverlap> deepest(static_cast<std::size_t>(threads));
+    // Thread t owns a block of consecutive rows [bound_t, bound_t+1): it adds into the
+    // particles' arrays for every body in its block, and queues the reaction on a body of
+    // another block (few, the slots being Morton-ordered); after a barrier each thread applies
+    // the queued reactions on its block in thread order. No atomics, no race, and
+    // deterministic for a thread count. The blocks hold equal shares of listed entries plus
+    // rows (a bed's lower, compressed half has more entries than its top).
+    const auto nt = static_cast<std::size_t>(threads);
+    own_.resize(nt);
+    std::vector<std::size_t> bound(nt + 1, n);
+    bound[0] = 0;
+    const std::uint32_t* row_first = c.neighbours.first.data();
+    const double work = static_cast<double>(row_first[n]) + static_cast<double>(n);
+    for (std::size_t t = 1; t < nt; ++t) {
+      const double share = work * static_cast<double>(t) / static_cast<double>(nt);
+      std::size_t lo = bound[t - 1], hi = n;  // first row whose prefix work reaches the share
+      while (lo < hi) {
+        const std::size_t mid = lo + (hi - lo) / 2;
+        if (static_cast<double>(row_first[mid]) + static_cast<double>(mid) < share) lo = mid + 1;
+        else hi = mid;
+      }
+      bound[t] = lo;
+    }
     const Vec3* x = p.position.data();
     const Vec3* v = p.velocity.data();
     const Vec3* w = p.angular_velocity.data();
@@ -65,9 +83,8 @@ class LawForces final : public ForceKernel {
 #else
       const std::size_t tid = 0;
 #endif
-      const auto nt = static_cast<std::size_t>(threads);
-      const std::size_t begin = n * tid / nt, end = n * (tid + 1) / nt;
-      std::vector<Reaction>& queue = pending_[tid];
+      const std::size_t begin = bound[tid], end = bound[tid + 1];
+      std::vector<Reaction>& queue = own_[tid].queue;
       queue.clear();
       DeepestOverlap worst;
       for (std::size_t i = begin; i < end; ++i) {
@@ -120,22 +137,22 @@ class LawForces final : public ForceKernel {
         force[i] += fi;
         torque[i] += ti;
       }
-      deepest[tid] = worst;
+      own_[tid].worst = worst;
 #pragma omp barrier
       for (std::size_t t = 0; t < nt; ++t)
-        for (const Reaction& q : pending_[t])
+        for (const Reaction& q : own_[t].queue)
           if (q.slot >= begin && q.slot < end) {
             force[q.slot] += q.force;
             torque[q.slot] += q.torque;
           }
     }
     DeepestOverlap result;
-    for (const auto& d : deepest)
-      if (d.ratio > result.ratio) result = d;
+    for (const auto& o : own_)
+      if (o.worst.ratio > result.ratio) result = o.worst;
     return result;
   }
 
-  DeepestOverlap add_wall_forces(ForceContext& c) override {
+  [[gnu::flatten]] DeepestOverlap add_wall_forces(ForceContext& c) override {
     ParticleStore& p = c.particles;
     const std::size_t n = p.size();
     const std::size_t walls = c.walls.size();
@@ -278,7 +295,13 @@ class LawForces final : public ForceKernel {
     Vec3 force;
     Vec3 torque;
   };
-  std::vector<std::vector<Reaction>> pending_;
+  // What one thread of the pair loop owns, on cache lines of its own (the queue's size is
+  // written at every push; two threads' queues on one line would bounce it between cores).
+  struct alignas(64) ThreadShare {
+    std::vector<Reaction> queue;
+    DeepestOverlap worst;
+  };
+  std::vector<ThreadShare> own_;
 };
 
 }  // namespace feedflow
