@@ -124,7 +124,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
         if (touches_wall(engine, x, s.radius)) continue;
         engine.insert_particle(x, s.radius, s.density, 0.0, s.initial_velocity);
         near.push_back(engine.particles().size() - 1);
-        report.inserted_mass += sphere_mass;
+        report.inserted_mass += engine.particles().mass.back();  // the very number the store holds
         ++report.inserted_count;
         placed = true;
       }
