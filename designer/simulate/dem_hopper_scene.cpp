@@ -104,7 +104,9 @@ std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& s, const Simulatio
   }
   DemEngine engine(s.settings, s.slab.box(), ParticleStore{});
   s.slab.add_walls(engine);
-  s.fill = rain_fill(engine, s.slab.rain(s.density, s.bands, s.seed), log);
+  RainFillSettings rain = s.slab.rain(s.density, s.bands, s.seed);
+  rain.progress = request.progress;
+  s.fill = rain_fill(engine, rain, log);
   if (s.fill.interrupted) return std::nullopt;
   // The gate goes at the next step; the bands are frozen as they are now.
   s.opening_time = engine.time();

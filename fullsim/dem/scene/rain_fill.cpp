@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fullsim/common/interrupt_request.hpp"
+#include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
 
 namespace feedflow {
@@ -143,6 +144,11 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
 
   insert_batch();
   engine.prepare(log);
+  const double goal = std::isfinite(s.target_mass)
+                          ? s.target_mass
+                          : static_cast<double>(std::min<std::size_t>(s.target_count, 1u << 30)) * sphere_mass;
+  ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
+  double next_note = 0.1 * goal;
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
     if (interrupt_requested()) {
       report.interrupted = true;
@@ -150,7 +156,14 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     }
     engine.run_until(engine.time() + s.batch_interval);
     insert_batch();
+    progress.update(report.inserted_mass);
+    if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
+      log << format("  fill: %.4g of %.4g kg in at t = %.4g s\n", report.inserted_mass, goal,
+                    engine.time());
+      next_note += 0.1 * goal;
+    }
   }
+  progress.finish();
   report.target_reached = target_reached();
   report.insert_end_time = engine.time();
   log << format("  fill: inserting done at t = %.4g s (%zu spheres, %.6g kg)\n", engine.time(),

@@ -53,6 +53,7 @@ struct RainFillSettings {
   double band_origin = 0.0;          // [m] height of the lowest band's bottom
   double band_height = std::numeric_limits<double>::infinity();  // [m]; inf: one band (0)
   std::uint64_t seed = 1;
+  bool progress = false;             // a progress line (inserted mass, ETA) on a terminal
   // Whether a centre may receive a sphere (inside the container); none: everywhere.
   std::function<bool(const Vec3& centre, double radius)> admits;
 };
