@@ -85,6 +85,10 @@ void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
 std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& s, const SimulationRequest& request,
                                               std::ostream& log) {
   log << "DEM hopper scene (seed 3.1):\n" << s.slab.describe();
+  log << "  skipped: the 3D rig (a slab; masses x " << s.depth_scale()
+      << " = slot length / slab depth), the sliding side walls (a gate plane removed at the "
+         "opening), the fall below the outlet (particles deleted 5 R under it, mass booked), "
+         "the run after q_m has converged (95 % interval within +-5 %), an arch or emptying\n";
   if (!request.restart.empty()) {
     DemCheckpoint checkpoint;
     try {
