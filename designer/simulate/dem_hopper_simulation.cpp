@@ -157,15 +157,23 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
       "DEM slab %.3g mm deep (rung L3), scaled x %.4g (slot length %.4g m / slab depth)",
       scene.slab.depth * 1e3, scale, scene.slot_length);
   const bool arched = state == DischargeState::arched;
-  if (rate.found) {
+  const double discharged = sink->removed_mass() - scene.fill.sunk_mass;
+  if (arched) {
+    // An arch ends the flow: no steady rate, whatever dribbled out before it.
+    const double last = sink->events().empty() ? t_open : sink->events().back().time;
+    record.results.emplace_back(
+        "mass_flow_rate",
+        number(0.0, "kg/s", 0.0, 0.0,
+               slab_model + format("; arched: %.4g kg (scaled) left before the last exit at "
+                                   "%.3g s after the opening",
+                                   discharged * scale, std::max(0.0, last - t_open))));
+  } else if (rate.found) {
     record.results.emplace_back(
         "mass_flow_rate", number(rate.rate * scale, "kg/s", rate.low * scale, rate.high * scale,
                                  slab_model + "; steady window " + rate.describe()));
     record.results.emplace_back("mass_flow_rate_slab",
                                 number(rate.rate, "kg/s", rate.low, rate.high,
                                        "DEM slab as simulated (before the depth scaling)"));
-  } else if (arched && (sink->removed_mass() - scene.fill.sunk_mass) < 1e-3 * scene.fill.inserted_mass) {
-    record.results.emplace_back("mass_flow_rate", number(0.0, "kg/s", 0.0, 0.0, slab_model + "; arched, nothing flowed"));
   }
   record.results.emplace_back(
       "arching", label(arched ? "arched" : state == DischargeState::emptied ? "emptied (no arch)" : "flowing",
@@ -179,7 +187,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
   record.results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
                                                      "pairs from different bands leaving in band order", Rung::L3, ""});
   record.results.emplace_back("discharged_mass",
-                              number((sink->removed_mass() - scene.fill.sunk_mass) * scale, "kg",
+                              number(discharged * scale, "kg",
                                      std::nullopt, std::nullopt, slab_model));
   record.results.emplace_back("simulated_time_after_opening",
                               number(engine.time() - t_open, "s", std::nullopt, std::nullopt,

@@ -75,6 +75,7 @@ TEST(DemHopperSimulation, TwinArchesAtTwentyMillimetres) {
   const SimulationOutcome o = simulate(kTwin, {{"hopper.outlet_width", "20 mm"}}, out);
   EXPECT_EQ(std::get<std::string>(find(o.record, "arching")->value), "arched");
   EXPECT_EQ(o.record.verdict.status, VerdictStatus::fail);
+  EXPECT_EQ(std::get<double>(find(o.record, "mass_flow_rate")->value), 0.0);
   // The last rows: nothing left the hopper over the last 0.4 s.
   const auto& rows = o.series.rows();
   ASSERT_GT(rows.size(), 50u);
