@@ -64,6 +64,17 @@ double kept_max_speed(const ParticleStore& p, const std::optional<double>& trim_
   return std::sqrt(v2);
 }
 
+// Runs until `t` in chunks, so Ctrl-C is seen within a few hundred steps; false when it was.
+bool run_until_or_interrupted(DemEngine& engine, double t) {
+  constexpr long kChunk = 200;
+  const long steps = static_cast<long>(std::ceil((t - engine.time()) / engine.time_step() - 1e-9));
+  for (long done = 0; done < steps; done += kChunk) {
+    if (interrupt_requested()) return false;
+    engine.run_steps(std::min(kChunk, steps - done));
+  }
+  return true;
+}
+
 }  // namespace
 
 double resting_fill_top(const ParticleStore& p, double resting_speed) {
@@ -159,11 +170,10 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
   double next_note = 0.1 * goal;
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
-    if (interrupt_requested()) {
+    if (!run_until_or_interrupted(engine, engine.time() + s.batch_interval)) {
       report.interrupted = true;
       return report;
     }
-    engine.run_until(engine.time() + s.batch_interval);
     insert_batch();
     progress.update(report.inserted_mass);
     if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
@@ -181,11 +191,10 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   // Settling: at least one check interval, so freshly inserted spheres have landed.
   const double settle_start = engine.time();
   do {
-    if (interrupt_requested()) {
+    if (!run_until_or_interrupted(engine, engine.time() + s.settle_check_interval)) {
       report.interrupted = true;
       return report;
     }
-    engine.run_until(engine.time() + s.settle_check_interval);
     report.final_max_speed = kept_max_speed(engine.particles(), s.trim_height);
     report.settled = report.final_max_speed < s.settle_speed;
   } while (!report.settled && engine.time() - settle_start < s.settle_time_cap);
