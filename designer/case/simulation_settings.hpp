@@ -3,6 +3,7 @@
 // run. Every field is optional; an absent one takes the scene's default (stated in its plan).
 #include <optional>
 #include <span>
+#include <string>
 
 #include "models/core/field_spec.hpp"
 
@@ -14,6 +15,7 @@ struct DemCaseSettings {
   std::optional<double> snapshot_interval;  // [s] between HDF5 particle snapshots
   std::optional<double> time_step;          // [s] below the stable step (warned) or forced
   std::optional<double> random_seed;        // [-] of the rain-fall insertion
+  std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
 };
 
 struct CelCaseSettings {

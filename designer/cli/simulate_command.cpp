@@ -121,7 +121,11 @@ int run_simulate(const SimulateArguments& args) {
     std::cout << '\n';
   }
   if (outcome.end == SimulationEnd::interrupted) {
-    std::cerr << "feedflow: interrupted; continue with --restart and the checkpoint listed above\n";
+    bool checkpointed = false;
+    for (const auto& f : written) checkpointed = checkpointed || f.filename() == "checkpoint.h5";
+    std::cerr << (checkpointed ? "feedflow: interrupted; continue with --restart and the checkpoint listed above\n"
+                               : "feedflow: interrupted before a checkpoint could be written (e.g. while "
+                                 "filling); run again\n");
     return kExitInterrupted;
   }
   return kExitOk;
