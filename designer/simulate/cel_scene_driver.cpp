@@ -105,7 +105,9 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
     while (t >= (static_cast<double>(result.samples.size()) + 1.0) * setup.sample_interval) {
       auto row = setup.sample(run);
       result.samples.push_back(std::move(row));
+      if (setup.finished && setup.finished(run, result.samples)) result.finished_early = true;
     }
+    if (result.finished_early) break;
     if (t >= snapshot_at) {
       auto scope = report.time("snapshots");
       snapshots.write(run.solver());

@@ -19,12 +19,16 @@ struct CelRunSetup {
   double sample_interval = 0.01;  // [s]
   // One row of the time series (its first value is the time).
   std::function<std::vector<double>(const cel::CelSceneRun&)> sample;
+  // Optional: ends the run before the simulated time is up (flow come to rest), asked after
+  // every sample with the rows so far.
+  std::function<bool(const cel::CelSceneRun&, const std::vector<std::vector<double>>&)> finished;
 };
 
 struct CelRunResult {
   std::unique_ptr<cel::CelSceneRun> run;
   std::vector<std::vector<double>> samples;
   double end_time = 0.0;            // event time + simulated time after it [s]
+  bool finished_early = false;      // CelRunSetup::finished said so
   SimulationEnd end = SimulationEnd::completed;
   std::vector<std::filesystem::path> files;
   double cell_updates_per_second = 0.0;

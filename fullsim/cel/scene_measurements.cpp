@@ -70,15 +70,14 @@ FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max) {
   for (int i = 0; i < g.nx; ++i) {
     const double x = g.origin.x() + (i + 0.5) * g.cell_size;
     if (x < x_min || x > x_max) continue;
-    for (int j = g.ny - 1; j > 0; --j) {
-      const double below = vf[g.cell(i, j - 1)], here = vf[g.cell(i, j)];
-      if (below >= 0.5 && here < 0.5) {
-        const double y0 = g.origin.y() + (j - 0.5) * g.cell_size;
-        f.x.push_back(x);
-        f.y.push_back(y0 + g.cell_size * (below - 0.5) / (below - here));
-        break;
-      }
-    }
+    int j = 0;  // up from the bottom: the first filled cell, then the first one below half
+    while (j < g.ny && vf[g.cell(i, j)] < 0.5) ++j;
+    while (j + 1 < g.ny && vf[g.cell(i, j + 1)] >= 0.5) ++j;
+    if (j + 1 >= g.ny) continue;  // no filled cell, or filled to the top
+    const double below = vf[g.cell(i, j)], here = vf[g.cell(i, j + 1)];
+    const double y0 = g.origin.y() + (j + 0.5) * g.cell_size;
+    f.x.push_back(x);
+    f.y.push_back(y0 + g.cell_size * (below - 0.5) / (below - here));
   }
   const std::size_t n = f.x.size();
   if (n < 2) return f;

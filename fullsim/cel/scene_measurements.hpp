@@ -30,7 +30,8 @@ struct FreeSurface {
   double slope_angle = 0.0;  // of the least-squares line, |atan slope| [rad]
 };
 
-// The bed surface scanned column by column from the top, between x_min and x_max.
+// The bed surface column by column between x_min and x_max: up from the lowest cell filled to
+// at least half, the first crossing below half (material thrown above the bed is ignored).
 FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max);
 
 // Thickness sum_j h vf over each column (cell centres x, thickness) [m].
