@@ -37,8 +37,15 @@ struct HopperRun {
   double rate = 0.0, final_rate = 0.0, balance = 0.0, booked_before_event = 0.0, event = 0.0;
 };
 
+// A shorter gravity phase than the scenes' default (the small fill settles faster).
+void shorten_gravity_phase(CelScene& scene) {
+  scene.gravity.ramp_time = 0.3;
+  scene.gravity.min_time = 0.35;
+}
+
 HopperRun run_hopper(double outlet, double after_event) {
   CelScene scene = make_hopper_scene(small_hopper(outlet), 8.5 * kDeg, kPine, 0.01);
+  shorten_gravity_phase(scene);
   CelSceneRun run(scene, pine());
   HopperRun r;
   while (run.phase() == ScenePhase::gravity) run.step();
@@ -60,7 +67,7 @@ HopperRun run_hopper(double outlet, double after_event) {
 // of the 60 mm rate scaled by (20/60)^1.5, the Beverloo width law); nothing leaves before the
 // gate opens and grid + booked + cut-off mass = initial to round-off in both.
 TEST(CelHopperScene, FlowsAt60mmNearlyStopsAt20mm) {
-  const HopperRun wide = run_hopper(0.06, 0.6), narrow = run_hopper(0.02, 0.6);
+  const HopperRun wide = run_hopper(0.06, 0.4), narrow = run_hopper(0.02, 0.4);
   const double scale = 290.0 * 0.06 * std::sqrt(9.81 * 0.06);
   EXPECT_EQ(wide.booked_before_event, 0.0);
   EXPECT_GT(wide.rate, 0.2 * scale);
@@ -85,7 +92,9 @@ TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
   c.bin_height = 0.3;
   c.fill_height = 0.2;
   const double h = 0.02;
-  CelSceneRun run(make_chute_scene(c, kPine, h), pine());
+  CelScene scene = make_chute_scene(c, kPine, h);
+  shorten_gravity_phase(scene);
+  CelSceneRun run(scene, pine());
   while (run.phase() == ScenePhase::gravity) run.step();
   double peak = 0.0;
   while (run.solver().time() < run.event_time() + 3.0) {
