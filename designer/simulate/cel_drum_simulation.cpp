@@ -98,6 +98,9 @@ SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request) {
           " (the seed's FEM used 20 deg; its AoR was insensitive above that).",
       "Initial void ratio 0.7102 (seed deck) at the case's bulk density; cut cells at the shell "
       "fill whole (a little extra mass).",
+      "Not validated: at 5 and 10 mm cells the bed does not reach a steady rolling layer; it "
+      "turns with the shell to 60-70 deg and slumps nearly flat (stick-slip), so the time "
+      "average mixes both and its band (+-1 SD) is wide. Compare the surface_angle series.",
       "The angle is the least-squares slope of the volume fraction 0.5 line over the central "
       "half of the diameter; first-order remap smears the surface over about two cells."};
   return out;
