@@ -32,7 +32,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   const auto& g = solver.grid();
   const auto& c = solver.cells();
   const std::size_t n = g.cell_count();
-  std::vector<double> density(n), vf(n), pressure(n), e(n), velocity(2 * n);
+  std::vector<double> density(n), vf(n), pressure(n), e(n), velocity(3 * n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
     density[k] = c.density(k, g.cell_volume());
     vf[k] = c.volume_fraction[k];
@@ -41,8 +41,8 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
     NodeVector v = NodeVector::Zero();
     if (vf[k] > 0.0)
       for (std::size_t a : g.cell_nodes(k)) v += 0.25 * solver.nodes().velocity[a];
-    velocity[2 * k] = v.x();
-    velocity[2 * k + 1] = v.y();
+    velocity[3 * k] = v.x();  // third component zero: ParaView's vectors have three
+    velocity[3 * k + 1] = v.y();
   }
   char name[48];
   std::snprintf(name, sizeof name, "/snapshots/step_%09ld", solver.step_count());
@@ -57,7 +57,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   f.write(group + "/volume_fraction", vf, dims, "1");
   f.write(group + "/pressure", pressure, dims, "Pa");
   f.write(group + "/void_ratio", e, dims, "1");
-  f.write(group + "/velocity", velocity, {n, 2}, "m/s");
+  f.write(group + "/velocity", velocity, {n, 3}, "m/s");
   f.close();
   groups_.push_back(group);
   times_.push_back(solver.time());
@@ -86,7 +86,7 @@ void CelFieldSnapshots::write_sidecar(const PlaneStrainGrid& g) const {
         << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << data << ':' << groups_[k]
         << '/' << a << "</DataItem>\n    </Attribute>\n";
     s << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Cell\">\n"
-      << "     <DataItem Dimensions=\"" << g.ny << ' ' << g.nx << " 2\" NumberType=\"Float\" "
+      << "     <DataItem Dimensions=\"" << g.cell_count() << " 3\" NumberType=\"Float\" "
       << "Precision=\"8\" Format=\"HDF\">" << data << ':' << groups_[k]
       << "/velocity</DataItem>\n    </Attribute>\n   </Grid>\n";
   }

@@ -1,6 +1,6 @@
 #pragma once
 // HDF5 snapshots of the CEL fields, one group /snapshots/step_<step> per snapshot (time, step;
-// per cell density, volume fraction, velocity (mean of the corner nodes), pressure -tr T/3 and
+// per cell density, volume fraction, velocity (mean of the corner nodes; x, y, 0), pressure -tr T/3 and
 // void ratio, with their units), and an XDMF sidecar (same stem, .xdmf) with one 2DCoRectMesh
 // grid per time and cell-centred attributes, which ParaView opens. The HDF5 file is closed
 // after each snapshot and the sidecar rewritten atomically, so a stopped run leaves both
