@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "fullsim/cel/lagrangian_phase.hpp"
 #include "models/core/errors.hpp"
@@ -136,6 +137,51 @@ void CelSolver::guard(const CelStepReport& report) const {
       }
     }
   }
+}
+
+CelSolverState CelSolver::state() const {
+  CelSolverState s;
+  s.cells = cells_;
+  s.cells.corner_force.clear();
+  s.nodes = nodes_;
+  s.void_node_mass = void_node_mass_;
+  s.time = time_;
+  s.dt_previous = dt_previous_;
+  s.steps = steps_;
+  s.cell_updates = cell_updates_;
+  s.removed_mass = removed_mass_;
+  s.settling_damping = options_.settling_damping;
+  for (const auto& w : options_.rigid_walls) {
+    s.wall_removal_times.push_back(w.removal_time);
+    s.wall_motion_starts.push_back(w.motion_start);
+    s.wall_motion_ends.push_back(w.motion_end);
+  }
+  s.discharge = discharge_;
+  return s;
+}
+
+void CelSolver::restore(const CelSolverState& s) {
+  const std::size_t walls = options_.rigid_walls.size();
+  if (s.cells.mass.size() != grid_.cell_count() || s.nodes.mass.size() != grid_.node_count() ||
+      s.wall_removal_times.size() != walls || s.wall_motion_starts.size() != walls ||
+      s.wall_motion_ends.size() != walls)
+    throw std::invalid_argument("CEL state of another grid or wall set");
+  cells_ = s.cells;
+  cells_.corner_force.assign(grid_.cell_count() * kNodesPerCell, NodeVector::Zero());
+  nodes_ = s.nodes;
+  void_node_mass_ = s.void_node_mass;
+  time_ = s.time;
+  dt_previous_ = s.dt_previous;
+  steps_ = s.steps;
+  cell_updates_ = s.cell_updates;
+  removed_mass_ = s.removed_mass;
+  options_.settling_damping = s.settling_damping;
+  for (std::size_t k = 0; k < walls; ++k) {
+    options_.rigid_walls[k].removal_time = s.wall_removal_times[k];
+    options_.rigid_walls[k].motion_start = s.wall_motion_starts[k];
+    options_.rigid_walls[k].motion_end = s.wall_motion_ends[k];
+  }
+  discharge_ = s.discharge;
 }
 
 double CelSolver::total_mass() const {

@@ -46,6 +46,22 @@ struct MaterialBlock {
   Eigen::Matrix3d stress = -10.0 * Eigen::Matrix3d::Identity();  // seed deck: -10 Pa I
 };
 
+// Everything a step depends on besides the grid, model and options: what a checkpoint holds so
+// that a restarted run continues bit-identically.
+struct CelSolverState {
+  CellFields cells;   // corner_force is scratch and not kept
+  NodeFields nodes;
+  double void_node_mass = 0.0;
+  double time = 0.0;
+  double dt_previous = 0.0;
+  long steps = 0;
+  long cell_updates = 0;
+  double removed_mass = 0.0;
+  double settling_damping = 0.0;
+  std::vector<double> wall_removal_times, wall_motion_starts, wall_motion_ends;  // per rigid wall
+  DischargeLedger discharge;
+};
+
 struct CelStepReport {
   double dt = 0.0;
   TimeStepChoice time_step{};
@@ -66,6 +82,14 @@ class CelSolver {
   void set_solid(std::size_t cell);
   // Gives every node that carries mass the velocity v.
   void set_velocity(const NodeVector& v);
+
+  // Scene events: a wall removed or set moving at a time, dynamic relaxation switched off.
+  RigidWall& rigid_wall(std::size_t k) { return options_.rigid_walls.at(k); }
+  void set_settling_damping(double alpha) { options_.settling_damping = alpha; }
+
+  // The state for a checkpoint, and its restoration (grid sizes and wall count must match).
+  CelSolverState state() const;
+  void restore(const CelSolverState& state);
 
   // One step; throws NumericalFailure (naming step, time, cell and a safer dt) on blow-up.
   CelStepReport step();

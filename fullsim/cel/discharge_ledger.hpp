@@ -3,6 +3,7 @@
 // flow from the remap fluxes): the running total and its time series, one sample per step, so
 // that mass on the grid + discharged mass stays the initial mass to round-off and the
 // discharge rate is the slope of the series.
+#include <utility>
 #include <vector>
 
 #include "fullsim/cel/plane_strain_grid.hpp"
@@ -21,6 +22,11 @@ class DischargeLedger {
     momentum_ += momentum;
     history_.push_back({time, total_});
   }
+  // Restores a ledger from its parts (checkpoint).
+  DischargeLedger(double total, const NodeVector& momentum, std::vector<DischargeSample> history)
+      : total_(total), momentum_(momentum), history_(std::move(history)) {}
+  DischargeLedger() = default;
+
   double total() const { return total_; }                   // [kg/m]
   const NodeVector& momentum() const { return momentum_; }  // carried out [kg m/s /m]
   const std::vector<DischargeSample>& history() const { return history_; }

@@ -3,8 +3,10 @@
 // C1): a polyline whose two end segments are extended to rays, so it divides the plane into the
 // material side (left of the direction of travel along the points, where the distance is
 // positive) and the wall solid (negative). One segment is a half-plane at any angle; three points
-// make a hopper wall with a kink. The wall may move rigidly (translation plus rotation about a
-// centre, for the drum) and may be removed at a time (a gate over the hopper outlet).
+// make a hopper wall with a kink. A closed polyline (a drum shell) has no rays: material inside
+// when its points run counter-clockwise. The wall may move rigidly (translation plus rotation
+// about a centre, for the drum) during a motion interval (a gate lifted to its opening, a drum
+// started after the gravity phase) and may be removed at a time (a gate over a hopper outlet).
 #include <Eigen/Core>
 #include <limits>
 #include <vector>
@@ -21,8 +23,14 @@ struct RigidWall {
   double angular_velocity = 0.0;                    // counter-clockwise about `centre` [rad/s]
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // rotation centre at t = 0 [m]
   double removal_time = std::numeric_limits<double>::infinity();  // gone for t >= this [s]
+  bool closed = false;       // the last point joins the first (no end rays)
+  double motion_start = 0.0;  // the wall moves with `velocity`/`angular_velocity` from here [s]
+  double motion_end = std::numeric_limits<double>::infinity();  // and rests again from here [s]
 
   bool present(double t) const { return t < removal_time; }
+  bool moving(double t) const { return t >= motion_start && t < motion_end; }
+  // Time spent moving up to t [s].
+  double motion_time(double t) const;
 };
 
 // A half-plane wall through `point` whose outward normal (into the material) is `normal`.
@@ -46,6 +54,7 @@ class PlacedWall {
   std::vector<Eigen::Vector2d> points_;
   std::vector<NodeVector> normals_;  // per segment
   Eigen::Vector2d centre_;
+  bool moving_ = false;
 };
 
 }  // namespace feedflow::cel

@@ -1,0 +1,21 @@
+#include "designer/simulate/reduced_model_beside.hpp"
+
+#include "designer/design/design_check.hpp"
+
+namespace feedflow {
+
+const Estimate* find_result(const DesignRecord& record, const std::string& name) {
+  for (const auto& [key, e] : record.results)
+    if (key == name) return &e;
+  return nullptr;
+}
+
+void add_reduced_model_results(const Case& c, const std::vector<std::string>& names,
+                               DesignRecord& record) {
+  const DesignRecord design = design_check(c);
+  for (const auto& name : names)
+    if (const Estimate* e = find_result(design, name))
+      record.results.emplace_back(name + "_reduced_model", *e);
+}
+
+}  // namespace feedflow

@@ -1,0 +1,19 @@
+#pragma once
+// The reduced-model value of a quantity beside the simulated one: runs the design check of the
+// same case and copies the named results as "<name>_reduced_model" (their own rung and band).
+#include <string>
+#include <vector>
+
+#include "designer/case/case.hpp"
+#include "models/core/design_record.hpp"
+
+namespace feedflow {
+
+// Returns the design check's verdict status for the notes; missing names are skipped.
+void add_reduced_model_results(const Case& c, const std::vector<std::string>& names,
+                               DesignRecord& record);
+
+// The named result of a record, or null.
+const Estimate* find_result(const DesignRecord& record, const std::string& name);
+
+}  // namespace feedflow

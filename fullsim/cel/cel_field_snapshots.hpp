@@ -1,0 +1,32 @@
+#pragma once
+// HDF5 snapshots of the CEL fields, one group /snapshots/step_<step> per snapshot (time, step;
+// per cell density, volume fraction, velocity (mean of the corner nodes; x, y, 0), pressure -tr T/3 and
+// void ratio, with their units), and an XDMF sidecar (same stem, .xdmf) with one 2DCoRectMesh
+// grid per time and cell-centred attributes, which ParaView opens. The HDF5 file is closed
+// after each snapshot and the sidecar rewritten atomically, so a stopped run leaves both
+// readable. Appending to an existing file continues it (restart).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fullsim/cel/cel_solver.hpp"
+
+namespace feedflow::cel {
+
+class CelFieldSnapshots {
+ public:
+  // `append`: keep the snapshots already in the file (a restarted run).
+  CelFieldSnapshots(std::filesystem::path hdf5_file, bool append);
+  void write(const CelSolver& solver);
+  const std::filesystem::path& file() const { return file_; }
+  std::filesystem::path sidecar() const;
+  std::size_t count() const { return times_.size(); }
+
+ private:
+  void write_sidecar(const PlaneStrainGrid& grid) const;
+  std::filesystem::path file_;
+  std::vector<double> times_;
+  std::vector<std::string> groups_;
+};
+
+}  // namespace feedflow::cel

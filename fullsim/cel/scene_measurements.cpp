@@ -1,0 +1,101 @@
+#include "fullsim/cel/scene_measurements.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feedflow::cel {
+namespace {
+
+// Least-squares slope of y(x) over the samples [first, last).
+double slope(const std::vector<DischargeSample>& s, std::size_t first, std::size_t last) {
+  if (last <= first + 1) return 0.0;
+  double mx = 0.0, my = 0.0;
+  const double n = static_cast<double>(last - first);
+  for (std::size_t k = first; k < last; ++k) mx += s[k].time, my += s[k].mass;
+  mx /= n, my /= n;
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t k = first; k < last; ++k) {
+    sxy += (s[k].time - mx) * (s[k].mass - my);
+    sxx += (s[k].time - mx) * (s[k].time - mx);
+  }
+  return sxx > 0.0 ? sxy / sxx : 0.0;
+}
+
+}  // namespace
+
+DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass) {
+  const auto& h = ledger.history();
+  DischargeRate r;
+  std::size_t first = 0;
+  while (first < h.size() && h[first].time < start) ++first;
+  std::size_t last = first;
+  while (last < h.size() && initial_mass - h[last].mass > 0.2 * initial_mass) ++last;
+  if (last <= first + 4) return r;
+  r.window_start = h[first].time;
+  r.window_end = h[last - 1].time;
+  r.rate = slope(h, first, last);
+  r.low = r.high = r.rate;
+  const std::size_t q = (last - first) / 4;
+  for (int k = 0; k < 4; ++k) {
+    const double s = slope(h, first + k * q, first + (k + 1) * q);
+    r.low = std::min(r.low, s);
+    r.high = std::max(r.high, s);
+  }
+  const std::size_t tail = h.size() - std::max<std::size_t>((h.size() - first) / 4, 2);
+  r.final_rate = slope(h, std::max(tail, first), h.size());
+  return r;
+}
+
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y) {
+  const auto& g = solver.grid();
+  const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);
+  double heaviest = 0.0;
+  for (int i = 0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
+  const double light = 0.05 * heaviest;  // nodes of nearly empty cells do not count
+  double centre = 0.0, wall = 0.0;
+  bool found = false;
+  for (int i = 0; i <= g.nx; ++i) {
+    const std::size_t a = g.node(i, j);
+    if (solver.nodes().mass[a] <= light) continue;
+    if (!found) centre = solver.nodes().velocity[a].norm(), found = true;
+    wall = solver.nodes().velocity[a].norm();
+  }
+  return centre > 0.0 ? wall / centre : 0.0;
+}
+
+FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max) {
+  const auto& g = solver.grid();
+  const auto& vf = solver.cells().volume_fraction;
+  FreeSurface f;
+  for (int i = 0; i < g.nx; ++i) {
+    const double x = g.origin.x() + (i + 0.5) * g.cell_size;
+    if (x < x_min || x > x_max) continue;
+    int j = 0;  // up from the bottom: the first filled cell, then the first one below half
+    while (j < g.ny && vf[g.cell(i, j)] < 0.5) ++j;
+    while (j + 1 < g.ny && vf[g.cell(i, j + 1)] >= 0.5) ++j;
+    if (j + 1 >= g.ny) continue;  // no filled cell, or filled to the top
+    const double below = vf[g.cell(i, j)], here = vf[g.cell(i, j + 1)];
+    const double y0 = g.origin.y() + (j + 0.5) * g.cell_size;
+    f.x.push_back(x);
+    f.y.push_back(y0 + g.cell_size * (below - 0.5) / (below - here));
+  }
+  const std::size_t n = f.x.size();
+  if (n < 2) return f;
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < n; ++k) mx += f.x[k], my += f.y[k];
+  mx /= n, my /= n;
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t k = 0; k < n; ++k) sxy += (f.x[k] - mx) * (f.y[k] - my), sxx += (f.x[k] - mx) * (f.x[k] - mx);
+  f.slope_angle = std::abs(std::atan(sxy / sxx));
+  return f;
+}
+
+std::vector<double> column_thickness(const CelSolver& solver) {
+  const auto& g = solver.grid();
+  std::vector<double> t(g.nx, 0.0);
+  for (int i = 0; i < g.nx; ++i)
+    for (int j = 0; j < g.ny; ++j) t[i] += g.cell_size * solver.cells().volume_fraction[g.cell(i, j)];
+  return t;
+}
+
+}  // namespace feedflow::cel

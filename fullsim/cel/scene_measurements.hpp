@@ -1,0 +1,40 @@
+#pragma once
+// What the scenes measure on the fields (issue 7 "Measurements"): the discharge rate from the
+// outflow ledger, the flow pattern of a hopper from the velocity field, the free surface of a
+// drum bed (volume fraction 0.5) and its slope, and the deposit thickness along a ramp (sum of
+// cell heights x volume fraction, as the seed's FEM).
+#include <vector>
+
+#include "fullsim/cel/cel_solver.hpp"
+
+namespace feedflow::cel {
+
+struct DischargeRate {
+  double rate = 0.0;          // least-squares slope over the window [kg/s per m depth]
+  double low = 0.0, high = 0.0;  // smallest and largest slope of the window's four quarters
+  double window_start = 0.0, window_end = 0.0;  // [s]
+  double final_rate = 0.0;    // slope over the last quarter of the run [kg/s/m]
+};
+
+// The rate over the steady window: from `start` to the end of the ledger, ended early when the
+// grid holds less than 20 % of `initial_mass` (the hopper is running empty).
+DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass);
+
+// Speed of the material beside the inclined wall over the centreline speed, at the height
+// `y` (nodes with mass on that grid row; the wall-side node is the last one carrying mass).
+// Mass flow when it exceeds 0.1 (the wall material moves), funnel flow otherwise.
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y);
+
+struct FreeSurface {
+  std::vector<double> x, y;  // points where the volume fraction crosses 0.5 [m]
+  double slope_angle = 0.0;  // of the least-squares line, |atan slope| [rad]
+};
+
+// The bed surface column by column between x_min and x_max: up from the lowest cell filled to
+// at least half, the first crossing below half (material thrown above the bed is ignored).
+FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max);
+
+// Thickness sum_j h vf over each column (cell centres x, thickness) [m].
+std::vector<double> column_thickness(const CelSolver& solver);
+
+}  // namespace feedflow::cel

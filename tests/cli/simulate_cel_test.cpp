@@ -1,0 +1,84 @@
+// `feedflow simulate --solver cel` end to end: results JSON (rung L2), time series, HDF5 fields
+// with their XDMF sidecar, a checkpoint, and a restart that continues the run bit-identically.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using feedflow::testing::run_feedflow;
+using feedflow::testing::slurp;
+
+namespace {
+
+class SimulateCel : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           (std::string("feedflow_cel_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy(fs::path(FEEDFLOW_SOURCE_DIR) / "cases", dir_ / "cases", fs::copy_options::recursive);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+const std::string kHopper =
+    "simulate cases/pilot_hopper.toml --solver cel --set cel.cell_size=20mm "
+    "--set hopper.outlet_width=100mm ";
+
+double result_value(const nlohmann::json& j, const std::string& name) {
+  if (!j.at("results").contains(name)) {
+    ADD_FAILURE() << "no result " << name;
+    return 0.0;
+  }
+  return j.at("results").at(name).at("value").get<double>();
+}
+
+// The pilot hopper (100 mm outlet, 20 mm cells) for 0.2 s after the opening: exit 0, rung L2
+// results with q_m and the reduced model's q_m beside it, mass bookkeeping to round-off, the
+// plan and the performance block printed, the time series, fields and sidecar written; a run
+// of 0.1 s continued from its checkpoint to 0.2 s gives the same discharged mass to the last
+// bit and the same time series.
+TEST_F(SimulateCel, HopperRunsAndRestartsBitIdentically) {
+  const auto straight = run_feedflow(kHopper + "--time 0.2s --out straight", dir_);
+  ASSERT_EQ(straight.exit_code, 0) << straight.err;
+  EXPECT_NE(straight.out.find("CEL-FEM plan"), std::string::npos);
+  EXPECT_NE(straight.out.find("cell updates/s"), std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(dir_ / "straight/results.json"));
+  EXPECT_EQ(j.at("results").at("mass_flow_rate").at("rung"), "L2");
+  EXPECT_GT(result_value(j, "mass_flow_rate"), 0.0);
+  EXPECT_GT(result_value(j, "mass_flow_rate_reduced_model"), 0.0);
+  EXPECT_LT(std::abs(result_value(j, "mass_balance_error")), 1e-12);
+  EXPECT_NE(slurp(dir_ / "straight/timeseries.csv").find("discharged_mass [kg]"), std::string::npos);
+  EXPECT_NE(slurp(dir_ / "straight/fields.xdmf").find("2DCoRectMesh"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "straight/fields.h5"));
+
+  const auto first = run_feedflow(kHopper + "--time 0.1s --out first", dir_);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const auto resumed =
+      run_feedflow(kHopper + "--time 0.2s --restart first/checkpoint.h5 --out resumed", dir_);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("restarted from"), std::string::npos);
+  const auto k = nlohmann::json::parse(slurp(dir_ / "resumed/results.json"));
+  EXPECT_EQ(result_value(k, "discharged_mass"), result_value(j, "discharged_mass"));
+  EXPECT_GT(result_value(k, "discharged_mass"), 0.0);
+  EXPECT_EQ(slurp(dir_ / "resumed/timeseries.csv"), slurp(dir_ / "straight/timeseries.csv"));
+}
+
+// A checkpoint of another grid is refused as bad input (exit 2) naming --restart.
+TEST_F(SimulateCel, RestartFromAnotherGridIsRefused) {
+  const auto first = run_feedflow(kHopper + "--time 0.01s --out first", dir_);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const auto r = run_feedflow(
+      "simulate cases/pilot_hopper.toml --solver cel --set cel.cell_size=25mm --time 0.01s "
+      "--restart first/checkpoint.h5 --out other", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--restart"), std::string::npos);
+  EXPECT_NE(r.err.find("another grid"), std::string::npos);
+}
+
+}  // namespace
