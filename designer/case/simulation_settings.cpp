@@ -17,6 +17,10 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
       optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
                                Range::closed(0.0, 4294967295.0),
                                "seed of the rain-fall insertion"),
+      label_field<S>("contact_law", &S::contact_law, kDemContactLaws,
+                     "seed (hysteretic, Table 2) or hertz (Hertz-Mindlin with Table 2's E, nu, e, "
+                     "mu, mu_r: a 20x larger step)",
+                     Presence::optional),
   };
   return fields;
 }

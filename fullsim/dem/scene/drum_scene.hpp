@@ -60,6 +60,8 @@ class DrumScene {
   const DemEngine& engine() const { return *engine_; }
   const DrumSceneSpec& spec() const { return spec_; }
   double rotation_start() const { return rotation_start_; }
+  // A restored run's rotation start (saved beside its checkpoint) [s].
+  void set_rotation_start(double t) { rotation_start_ = t; }
   double fill_line() const;  // z of the flat fill chord [m]
   double slab_depth() const;  // periodic depth or the full length [m]
   bool is_slab() const { return spec_.slab_depth.has_value(); }

@@ -113,7 +113,7 @@ DrumSteadyResult run_twin(double rpm) {
   std::ostringstream log;
   drum.start_rotation(log);
   const double period = 60.0 / rpm;
-  DrumAngleWatch watch(0.0725, std::max(0.3, 0.15 * period), std::max(0.3, 0.1 * period), 1.5 * kDeg);
+  DrumAngleWatch watch(0.0725, std::max(0.3, 0.12 * period), 0.3, 1.5 * kDeg);
   while (!watch.converged() && watch.samples().size() < 400) {
     drum.engine().run_until(drum.engine().time() + 0.02);
     watch.add(drum.sample());
