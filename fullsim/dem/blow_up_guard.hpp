@@ -26,6 +26,8 @@ class BlowUpGuard {
   void start(double kinetic_energy, double floor);
   // Work done by gravity during one step [J].
   void add_gravity_work(double work) { gravity_work_ += work; }
+  // Kinetic energy brought in by particles inserted during the run [J] (booked as initial).
+  void add_inserted_energy(double energy) { initial_energy_ += energy; }
 
   void check_overlap(const DeepestOverlap& deepest, const ParticleStore& p, long step) const;
   void check_state(const ParticleStore& p, double kinetic_energy, long step) const;

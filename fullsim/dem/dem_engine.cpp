@@ -58,6 +58,9 @@ DemEngine& DemEngine::operator=(DemEngine&&) noexcept = default;
 DemCheckpoint DemEngine::checkpoint() const {
   if (!prepared_)
     throw std::logic_error("DemEngine::checkpoint() before prepare(): nothing to continue yet");
+  if (rebuild_due_)
+    throw std::logic_error("DemEngine::checkpoint() right after inserting or removing particles: "
+                           "run a step first");
   DemCheckpoint c;
   c.step = step_;
   c.time = time_;
@@ -120,6 +123,34 @@ void DemEngine::add_mesh_wall(MeshWall mesh) {
 }
 
 void DemEngine::set_outlet_sink(OutletSink sink) { sink_ = std::move(sink); }
+
+std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double density,
+                                         double layer, const Vec3& velocity) {
+  const std::uint32_t id = particles_.add(x, radius, density, layer, velocity);
+  if (prepared_) {
+    const std::size_t k = particles_.size() - 1;
+    particles_.force[k] = particles_.mass[k] * settings_.gravity;
+    guard_.add_inserted_energy(0.5 * particles_.mass[k] * velocity.squaredNorm());
+    rebuild_due_ = true;
+  }
+  return id;
+}
+
+void DemEngine::remove_particles(const std::vector<char>& flagged) {
+  if (flagged.size() != particles_.size())
+    throw std::invalid_argument("DemEngine::remove_particles: one flag per particle expected");
+  particles_.remove_flagged(flagged);
+  rebuild_due_ = prepared_;
+}
+
+void DemEngine::set_wall_removal_time(const std::string& name, double t) {
+  for (auto& w : walls_)
+    if (w.name() == name) {
+      w.removed_at(t);
+      return;
+    }
+  throw std::invalid_argument("DemEngine: no analytic wall named '" + name + "'");
+}
 
 void DemEngine::prepare(std::ostream& out) {
   if (prepared_) return;
@@ -278,7 +309,8 @@ void DemEngine::one_step() {
     auto scope = report_.time("neighbours");
     const bool removed = sink_ && sink_->remove(particles_, time_) > 0;
     const double half_skin = 0.5 * neighbours_.skin();
-    if (removed || moved2 > half_skin * half_skin) rebuild_neighbours();
+    if (removed || rebuild_due_ || moved2 > half_skin * half_skin) rebuild_neighbours();
+    rebuild_due_ = false;
   }
   compute_forces();
   const std::size_t m = particles_.size();

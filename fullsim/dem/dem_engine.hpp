@@ -68,6 +68,18 @@ class DemEngine {
   void add_mesh_wall(MeshWall mesh);
   void set_outlet_sink(OutletSink sink);
 
+  // Filling and trimming between steps (rain-fall insertion, fullsim/dem/scene/): a particle
+  // added to a prepared run has its kinetic energy booked with the blow-up guard; after either
+  // call the neighbour list is rebuilt at the next step. Before prepare() they only edit the
+  // store.
+  std::uint32_t insert_particle(const Vec3& x, double radius, double density, double layer,
+                                const Vec3& velocity);
+  // Removes the particles whose flag (one per slot) is set.
+  void remove_particles(const std::vector<char>& flagged);
+  // The analytic wall `name` is gone from time `t` on (a gate opened once the fill has
+  // settled); throws std::invalid_argument for an unknown name.
+  void set_wall_removal_time(const std::string& name, double t);
+
   // Chooses the kernels and the time step, builds the neighbour list and the first forces,
   // and writes the plan to `out`. Called by the first run_steps() if not called before.
   void prepare(std::ostream& out);
@@ -127,6 +139,7 @@ class DemEngine {
   std::string plan_;
   std::unique_ptr<DemCheckpoint> pending_;  // a restored run's state until prepare()
   bool prepared_ = false;
+  bool rebuild_due_ = false;  // particles inserted or removed since the last step
   double time_ = 0.0;
   long step_ = 0;
   double particle_steps_ = 0.0;
