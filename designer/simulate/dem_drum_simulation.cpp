@@ -187,6 +187,8 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
   }
   if (ran.stop_reason.empty() && !request.end_time)
     verdict.note("the angle had not converged within " + fmt(run.duration) + " s of rotation");
+  if (request.restart.empty() && scene->trimmed() == 0)
+    verdict.note("the settled packing fell short of the fill line: the bed is below the asked fill");
   record.verdict = verdict.verdict();
   if (!verdict.judged()) record.verdict.status = VerdictStatus::unknown;
 

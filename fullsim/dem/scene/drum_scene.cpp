@@ -34,10 +34,12 @@ DrumScene::DrumScene(DemSettings settings, DrumSceneSpec spec)
   const double top = fill_line() + 0.6 * R;
   const double depth = slab_depth();
   const double a = kLatticeGap * 2.0 * r;
-  const int ny = spec_.slab_depth ? std::max(2, static_cast<int>(std::floor(depth / a)))
-                                  : static_cast<int>(std::floor((depth - 2.0 * r) / a)) + 1;
+  // Along a periodic axis the layers may touch (spacing >= 2R, no jitter in y): a 3-diameter
+  // slab holds 3 layers, not 2 at the x-z spacing.
+  const int ny = spec_.slab_depth ? std::max(2, static_cast<int>(std::floor(depth / (2.0 * r) + 1e-9)))
+                                  : static_cast<int>(std::floor((depth - 2.1 * r) / a)) + 1;
   const double ay = spec_.slab_depth ? depth / ny : a;
-  const double y0 = spec_.slab_depth ? 0.5 * ay : r * 1.02;
+  const double y0 = spec_.slab_depth ? 0.5 * ay : r * 1.05;
   std::mt19937 rng(spec_.seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   ParticleStore p;
@@ -46,7 +48,7 @@ DrumScene::DrumScene(DemSettings settings, DrumSceneSpec spec)
     for (double x = -R + 1.05 * r; x <= R - r; x += a) {
       if (std::hypot(x, z) > R - 1.1 * r) continue;
       for (int j = 0; j < ny; ++j) {
-        const Vec3 jitter = 0.02 * r * Vec3(u(rng), u(rng), u(rng));
+        const Vec3 jitter = 0.02 * r * Vec3(u(rng), 0.0, u(rng));
         p.add(Vec3(x, y0 + j * ay, z) + jitter, r, rho, 0.0, 0.05 * Vec3(u(rng), u(rng), u(rng)));
       }
     }
@@ -96,7 +98,12 @@ void DrumScene::fill(std::ostream& log) {
   DemCheckpoint c = engine_->checkpoint();
   c.sink = OutletSink::plane(Vec3(0, 0, fill_line()), Vec3::UnitZ());
   rebuild(std::move(c));
+  const std::size_t before = engine_->particles().size();
   engine_->run_steps(1);
+  trimmed_ = before - engine_->particles().size();
+  if (trimmed_ == 0)
+    log << "drum: warning: the settled bed does not reach the fill line; the fill is below "
+        << spec_.fill_fraction * 100 << " %\n";
   DemCheckpoint trimmed = engine_->checkpoint();
   trimmed.sink.reset();
   rebuild(std::move(trimmed));

@@ -65,6 +65,9 @@ class DrumScene {
   double fill_line() const;  // z of the flat fill chord [m]
   double slab_depth() const;  // periodic depth or the full length [m]
   bool is_slab() const { return spec_.slab_depth.has_value(); }
+  // Particles above the fill line removed after the first settling (0: the bed fell short of
+  // the fill line, the fill fraction is lower than asked).
+  std::size_t trimmed() const { return trimmed_; }
 
  private:
   void settle(std::ostream& log, const char* phase);
@@ -74,6 +77,7 @@ class DrumScene {
   DrumSceneSpec spec_;
   std::unique_ptr<DemEngine> engine_;
   double rotation_start_ = 0.0;
+  std::size_t trimmed_ = 0;
 };
 
 }  // namespace feedflow
