@@ -4,6 +4,8 @@
 // checkpoint written, the reduced-model values beside the DEM ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "run_feedflow.hpp"
@@ -53,6 +55,20 @@ TEST_F(SimulateDem, DrumWritesRungL3AngleAndRegime) {
   EXPECT_EQ(results.at("reduced_model_dynamic_angle_of_repose").at("rung"), "L0");
   EXPECT_NE(slurp(dir_ / "run/timeseries.csv").find("dynamic_angle_of_repose [deg]"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "run/checkpoint.h5"));
+}
+
+// Restart: a drum run stopped at 0.4 s of rotation and continued from its checkpoint to 0.8 s
+// writes the same time series, to the last digit, as an uninterrupted 0.8 s run (the angle, the
+// bed state and the kinetic energy at every sample).
+TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
+  const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin;
+  ASSERT_EQ(run_feedflow(run + " --time 0.8s --out whole", dir_).exit_code, 0);
+  ASSERT_EQ(run_feedflow(run + " --time 0.4s --out first", dir_).exit_code, 0);
+  const auto r = run_feedflow(run + " --time 0.8s --restart first/checkpoint.h5 --out second", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string whole = slurp(dir_ / "whole/timeseries.csv");
+  EXPECT_GT(std::count(whole.begin(), whole.end(), '\n'), 30);
+  EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
 }
 
 // A slab thinner than two neighbour cutoffs is refused naming the key (exit 2), and no output
