@@ -104,23 +104,16 @@ void InclinedPlaneScene::settle(std::ostream& log, const char* phase) {
 void InclinedPlaneScene::fill(std::ostream& log) {
   engine_->prepare(log);
   settle(log, "packing fell:");
-  DemCheckpoint c = engine_->checkpoint();
-  OutletSink sink = *c.sink;
-  c.sink = OutletSink::plane(Vec3(0, 0, spec_.fill_height), Vec3::UnitZ());  // trim for a step
-  rebuild(std::move(c));
-  engine_->run_steps(1);
-  DemCheckpoint trimmed = engine_->checkpoint();
-  trimmed.sink = sink;
-  rebuild(std::move(trimmed));
+  const ParticleStore& p = engine_->particles();
+  std::vector<char> above(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i) above[i] = p.position[i].z() > spec_.fill_height;
+  engine_->remove_particles(above);
   settle(log, "trimmed to the fill height:");
 }
 
 void InclinedPlaneScene::open_gate(std::ostream& log) {
-  DemCheckpoint c = engine_->checkpoint();
-  for (auto& w : c.walls)
-    if (w.name() == "gate") w.removed_at(c.time);
-  release_time_ = c.time;
-  rebuild(std::move(c));
+  release_time_ = engine_->time();
+  engine_->set_wall_removal_time("gate", release_time_);
   log << "inclined plane: gate opened to " << spec_.gate_opening << " m at t = " << release_time_ << " s\n";
 }
 

