@@ -2,6 +2,11 @@
 
 namespace feedflow {
 
+namespace {
+constexpr std::string_view kNormalLaws[] = {"hysteretic_nonlinear2", "hysteretic_nonlinear1",
+                                            "hertz", "hooke"};
+}  // namespace
+
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
   using S = DemCaseSettings;
   static const FieldSpec<S> fields[] = {
@@ -17,9 +22,9 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
       optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
                                Range::closed(0.0, 4294967295.0),
                                "seed of the rain-fall insertion"),
-      label_field<S>("contact_law", &S::contact_law, kDemContactLaws,
-                     "seed (hysteretic, Table 2) or hertz (Hertz-Mindlin with Table 2's E, nu, e, "
-                     "mu, mu_r: a 20x larger step)",
+      label_field<S>("normal_law", &S::normal_law, kNormalLaws,
+                     "normal contact law (default the seed's hysteretic_nonlinear2; hertz allows "
+                     "a ~20x larger time step for reduced test twins)",
                      Presence::optional),
   };
   return fields;

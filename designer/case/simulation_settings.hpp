@@ -15,13 +15,8 @@ struct DemCaseSettings {
   std::optional<double> snapshot_interval;  // [s] between HDF5 particle snapshots
   std::optional<double> time_step;          // [s] below the stable step (warned) or forced
   std::optional<double> random_seed;        // [-] of the rain-fall insertion
-  // "seed": the seed's hysteretic_nonlinear2 + history + cdt (Table 2, step ~0.75 us);
-  // "hertz": Hertz + Mindlin + cdt with Table 2's E, nu, e, mu, mu_r (step ~16 us, no
-  // plasticity); empty: the seed's.
-  std::string contact_law;
+  std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
 };
-
-inline constexpr std::string_view kDemContactLaws[] = {"seed", "hertz"};
 
 struct CelCaseSettings {
   std::optional<double> cell_size;          // [m] edge of the square Eulerian cells

@@ -10,8 +10,7 @@ DemSettings dem_case_settings(const Case& c) {
                                              " has no [dem] parameters (seed Table 2); the DEM needs them");
   DemSettings s;
   s.material = *c.material.dem;
-  if (c.dem.contact_law == "hertz")
-    s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
+  if (!c.dem.normal_law.empty()) s.law = choose_contact_law(c.dem.normal_law, "history", "cdt", "none");
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
   s.quiet = true;
   return s;

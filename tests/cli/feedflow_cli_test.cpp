@@ -202,3 +202,23 @@ TEST_F(FeedflowCli, DesignPrintsResultTable) {
 }
 
 }  // namespace
+
+// `feedflow simulate <small hopper case> --solver dem --time 0.3s`: exit 0, results.json with
+// the DEM results on rung L3 beside the reduced model's, timeseries.csv with the discharged
+// mass, the snapshots' XDMF sidecar and the checkpoint.
+TEST_F(FeedflowCli, SimulateSmallHopperWithDemWritesL3Results) {
+  fs::copy_file(fs::path(FEEDFLOW_SOURCE_DIR) / "tests/data/dem_hopper_twin.toml", dir_ / "twin.toml");
+  const auto r = run_feedflow("simulate twin.toml --solver dem --time 0.3s --out sim", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(slurp(dir_ / "sim/results.json"));
+  const auto& results = json.at("results");
+  EXPECT_EQ(results.at("arching").at("rung"), "L3");
+  EXPECT_EQ(results.at("mass_flow_rate").at("rung"), "L3");
+  EXPECT_EQ(results.at("mass_flow_rate").at("unit"), "kg/s");
+  EXPECT_GT(results.at("mass_flow_rate").at("value").get<double>(), 0.0);
+  EXPECT_NE(results.at("mass_flow_rate_reduced").at("rung"), "L3");
+  const std::string csv = slurp(dir_ / "sim/timeseries.csv");
+  EXPECT_EQ(csv.rfind("time [s],time_after_opening [s],discharged_mass [kg]", 0), 0u) << csv.substr(0, 200);
+  EXPECT_TRUE(fs::exists(dir_ / "sim/checkpoint.h5"));
+  EXPECT_TRUE(fs::exists(dir_ / "sim/particles.xdmf"));
+}

@@ -1,5 +1,5 @@
 // `feedflow simulate --solver dem` on the drum and inclined-plane cases, as a user runs it, on
-// reduced twins set from the command line (coarse particles R = 3 mm, Hertz law, 18 mm slab)
+// reduced twins set from the command line (coarse particles R = 3 mm, Hertz normal law, 18 mm slab)
 // so each run takes seconds: exit 0, results.json with rung L3 results, timeseries.csv and the
 // checkpoint written, the reduced-model values beside the DEM ones.
 #include <gtest/gtest.h>
@@ -30,7 +30,7 @@ class SimulateDem : public ::testing::Test {
 };
 
 const char* kTwin =
-    " --set dem.slab_depth=18mm --set dem.contact_law=hertz --set material.dem.particle.radius=3mm";
+    " --set dem.slab_depth=18mm --set dem.normal_law=hertz --set material.dem.particle.radius=3mm";
 
 // The seed drum at 20 rpm for 1.2 s of rotation: the DEM angle and regime come with rung L3
 // (the angle with a band around it), beside the reduced model's (feedflow design) values; the

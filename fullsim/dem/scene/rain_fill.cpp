@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fullsim/common/interrupt_request.hpp"
+#include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
 
 namespace feedflow {
@@ -52,6 +53,15 @@ void check(const RainFillSettings& s) {
       !s.target_height)
     bad("the fill needs a target mass, count or height");
   if (!(s.band_height > 0.0)) bad("the layer band height must be > 0 m");
+}
+
+// The largest speed among the particles the trim will keep (those above roll on the heap top
+// and are removed anyway).
+double kept_max_speed(const ParticleStore& p, const std::optional<double>& trim_height) {
+  double v2 = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k)
+    if (!trim_height || p.position[k].z() <= *trim_height) v2 = std::max(v2, p.velocity[k].squaredNorm());
+  return std::sqrt(v2);
 }
 
 }  // namespace
@@ -124,7 +134,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
         if (touches_wall(engine, x, s.radius)) continue;
         engine.insert_particle(x, s.radius, s.density, 0.0, s.initial_velocity);
         near.push_back(engine.particles().size() - 1);
-        report.inserted_mass += sphere_mass;
+        report.inserted_mass += engine.particles().mass.back();  // the very number the store holds
         ++report.inserted_count;
         placed = true;
       }
@@ -143,6 +153,11 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
 
   insert_batch();
   engine.prepare(log);
+  const double goal = std::isfinite(s.target_mass)
+                          ? s.target_mass
+                          : static_cast<double>(std::min<std::size_t>(s.target_count, 1u << 30)) * sphere_mass;
+  ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
+  double next_note = 0.1 * goal;
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
     if (interrupt_requested()) {
       report.interrupted = true;
@@ -150,7 +165,14 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     }
     engine.run_until(engine.time() + s.batch_interval);
     insert_batch();
+    progress.update(report.inserted_mass);
+    if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
+      log << format("  fill: %.4g of %.4g kg in at t = %.4g s\n", report.inserted_mass, goal,
+                    engine.time());
+      next_note += 0.1 * goal;
+    }
   }
+  progress.finish();
   report.target_reached = target_reached();
   report.insert_end_time = engine.time();
   log << format("  fill: inserting done at t = %.4g s (%zu spheres, %.6g kg)\n", engine.time(),
@@ -164,7 +186,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
       return report;
     }
     engine.run_until(engine.time() + s.settle_check_interval);
-    report.final_max_speed = engine.max_speed();
+    report.final_max_speed = kept_max_speed(engine.particles(), s.trim_height);
     report.settled = report.final_max_speed < s.settle_speed;
   } while (!report.settled && engine.time() - settle_start < s.settle_time_cap);
 

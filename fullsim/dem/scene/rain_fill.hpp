@@ -6,7 +6,8 @@
 // particle and no active wall (and where the scene's `admits` says it is inside the
 // container), with an initial velocity. Insertion stops at the target mass, count or
 // resting fill height; the fill
-// then settles until the largest speed is below a threshold (seed: 1 mm/s) or a time cap;
+// then settles until the largest speed (of the particles below the trim height, which stay) is
+// below a threshold (seed: 1 mm/s) or a time cap;
 // particles whose centre lies above the trim height are removed; each particle's `layer` is
 // set to the band of its settled height (floor((z - band_origin) / band_height)), for the
 // flow-pattern measurement. Deterministic for a seed (own 53-bit uniform draws, no
@@ -53,6 +54,7 @@ struct RainFillSettings {
   double band_origin = 0.0;          // [m] height of the lowest band's bottom
   double band_height = std::numeric_limits<double>::infinity();  // [m]; inf: one band (0)
   std::uint64_t seed = 1;
+  bool progress = false;             // a progress line (inserted mass, ETA) on a terminal
   // Whether a centre may receive a sphere (inside the container); none: everywhere.
   std::function<bool(const Vec3& centre, double radius)> admits;
 };

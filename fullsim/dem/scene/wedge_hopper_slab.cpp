@@ -49,7 +49,7 @@ SimulationBox WedgeHopperSlab::box() const {
   return b;
 }
 
-void WedgeHopperSlab::add_walls(DemEngine& engine) const {
+MeshWall WedgeHopperSlab::wedge_mesh() const {
   const double a = 0.5 * outlet_width, b = 0.5 * bin_width, zb = bin_bottom();
   const double y0 = -4.0 * radius, y1 = depth + 4.0 * radius;
   TriangleMesh mesh;
@@ -59,7 +59,12 @@ void WedgeHopperSlab::add_walls(DemEngine& engine) const {
     mesh.add_triangle(p0, p1, p2, mesh.triangles.size());
     mesh.add_triangle(p0, p2, p3, mesh.triangles.size());
   }
-  engine.add_mesh_wall(MeshWall("wedge", std::move(mesh)));
+  return MeshWall("wedge", std::move(mesh));
+}
+
+void WedgeHopperSlab::add_walls(DemEngine& engine) const {
+  const double b = 0.5 * bin_width;
+  engine.add_mesh_wall(wedge_mesh());
   engine.add_wall(Wall::plane("bin left", Vec3(-b, 0, 0), Vec3::UnitX()));
   engine.add_wall(Wall::plane("bin right", Vec3(b, 0, 0), -Vec3::UnitX()));
   if (!periodic()) {

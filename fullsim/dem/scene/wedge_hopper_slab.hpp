@@ -40,6 +40,9 @@ struct WedgeHopperSlab {
   SimulationBox box() const;
   // The walls (named "wedge", "bin left/right", "front", "back", "gate") and the sink.
   void add_walls(DemEngine& engine) const;
+  // The inclined walls alone (a restored run gets its analytic walls and sink from the
+  // checkpoint, which does not hold meshes).
+  MeshWall wedge_mesh() const;
   // Centres at least R inside the container and above the gate.
   std::function<bool(const Vec3&, double)> admits() const;
   // The rain-fall settings of this hopper (region over the bin, following the fill; stop

@@ -1,5 +1,5 @@
-// Full-size DEM scene validations of issue 6 (ctest label `long`, run by `make validate`; hours
-// on two cores). Their reduced fast twins: tests/fullsim/dem/drum_scene_test.cpp and
+// Full-size DEM scene validations of issue 6 (names with LONG_: ctest label `long`, run by
+// `make validate`; hours on two cores). Their reduced fast twins: tests/fullsim/dem/drum_scene_test.cpp and
 // inclined_plane_scene_test.cpp. Both use Hertz + Mindlin + cdt with Table 2's E, nu, e, mu and
 // mu_r (the seed's hysteretic law needs a 20x smaller step: weeks for these runs).
 #include <gtest/gtest.h>
@@ -52,7 +52,7 @@ DrumSteadyResult run_drum(double rpm, std::optional<double> slab, double wall_fr
 
 // The seed drum at the seed's particle size in a 9 mm periodic slab (shell friction 20 deg, the
 // FEM's): rolling at 10 rpm, cascading at 50, centrifuging at 300; the angle rises with speed.
-TEST(LongDrum, SeedResolutionSlabRegimesAndAngleRise) {
+TEST(DrumScene, LONG_SeedResolutionSlabRegimesAndAngleRise) {
   const auto slow = run_drum(10, 9e-3, std::tan(20 * kDeg));
   const auto fast = run_drum(50, 9e-3, std::tan(20 * kDeg));
   EXPECT_EQ(classify_drum_bed(slow.state).regime, DrumBedRegime::rolling);
@@ -63,7 +63,7 @@ TEST(LongDrum, SeedResolutionSlabRegimesAndAngleRise) {
 
 // The full 3D seed drum (about 70 000 spheres, Table 2 P-W 0.2 on the shell and the turning end
 // plates) rolls at 20 rpm, the seed's label (data.md 4).
-TEST(LongDrum, Full3dSeedDrumRollsAt20Rpm) {
+TEST(DrumScene, LONG_Full3dSeedDrumRollsAt20Rpm) {
   const auto r = run_drum(20, std::nullopt, 0.2);
   EXPECT_EQ(classify_drum_bed(r.state).regime, DrumBedRegime::rolling);
   EXPECT_GT(r.angle, 26.6 * kDeg);
@@ -89,7 +89,7 @@ DepositProfile run_full_plane(double angle_deg, double gate) {
 
 // The seed's full-size inclined plane (about 180 000 spheres) with the cases' gates (35 and
 // 13.5 cm): the mid-ramp deposit is thicker at 29.5 deg than at 37 deg (seed Fig. 5B).
-TEST(LongInclinedPlane, FullSizeDepositThickerAt29_5ThanAt37) {
+TEST(InclinedPlaneScene, LONG_FullSizeDepositThickerAt29_5ThanAt37) {
   const auto shallow = run_full_plane(29.5, 0.35), steep = run_full_plane(37.0, 0.135);
   EXPECT_GT(shallow.mid_ramp_height, steep.mid_ramp_height);
   EXPECT_GT(steep.mid_ramp_height, 0.0);

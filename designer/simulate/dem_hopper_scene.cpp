@@ -1,0 +1,129 @@
+#include "designer/simulate/dem_hopper_scene.hpp"
+
+#include <cstdio>
+
+#include "fullsim/dem/dem_checkpoint.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+NormalLaw normal_law(const std::string& keyword) {
+  if (keyword.empty() || keyword == "hysteretic_nonlinear2") return NormalLaw::hysteretic_nonlinear2;
+  if (keyword == "hysteretic_nonlinear1") return NormalLaw::hysteretic_nonlinear1;
+  if (keyword == "hertz") return NormalLaw::hertz;
+  if (keyword == "hooke") return NormalLaw::hooke;
+  throw InputError("", "dem.normal_law", "unknown normal law '" + keyword + "'");
+}
+
+}  // namespace
+
+DemHopperScene hopper_scene_from_case(const Case& c) {
+  const Hopper& h = std::get<Hopper>(c.equipment);
+  if (!h.is_wedge())
+    throw NotAvailable("the DEM hopper scene is a wedge (plane-flow) slab; a conical hopper "
+                       "needs the 3D scene, which is not in this build");
+  if (!c.material.dem)
+    throw InputError(c.file, "material.dem",
+                     "the material '" + c.material.name + "' has no [dem] parameters (Table 2)");
+  DemHopperScene s;
+  s.settings.material = *c.material.dem;
+  s.settings.law.normal = normal_law(c.dem.normal_law);
+  s.settings.quiet = true;
+  if (c.dem.time_step) s.settings.requested_time_step = *c.dem.time_step;
+  s.density = c.material.dem->particle.density;
+  const double r = c.material.dem->particle.radius;
+  s.slab = WedgeHopperSlab{h.semi_angle, h.outlet_width, h.bin_width, h.fill_height,
+                           c.dem.slab_depth.value_or(2.0 * r), r, s.settings.skin_fraction};
+  s.slab.check();
+  if (!h.slot_length) throw InputError(c.file, "hopper.slot_length", "the wedge needs its slot length");
+  s.slot_length = *h.slot_length;
+  s.seed = static_cast<std::uint64_t>(c.dem.random_seed.value_or(1.0));
+  s.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
+  if (c.dem.end_time) s.default_duration = *c.dem.end_time;
+  return s;
+}
+
+void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
+  f.set_attribute("/scene", "opening_time", s.opening_time);
+  f.set_attribute("/scene", "opening_step", static_cast<std::int64_t>(s.opening_step));
+  f.set_attribute("/scene", "inserted_mass", s.fill.inserted_mass);
+  f.set_attribute("/scene", "inserted_count", static_cast<std::int64_t>(s.fill.inserted_count));
+  f.set_attribute("/scene", "trimmed_mass", s.fill.trimmed_mass);
+  f.set_attribute("/scene", "trimmed_count", static_cast<std::int64_t>(s.fill.trimmed_count));
+  f.set_attribute("/scene", "sunk_mass", s.fill.sunk_mass);
+  f.set_attribute("/scene", "sunk_count", static_cast<std::int64_t>(s.fill.sunk_count));
+  f.set_attribute("/scene", "settled", static_cast<std::int64_t>(s.fill.settled));
+  f.set_attribute("/scene", "slab_depth", s.slab.depth);
+  f.write("/scene/initial_ids", s.initial_ids, {s.initial_ids.size()}, "");
+  f.write("/scene/initial_layers", s.initial_layers, {s.initial_layers.size()}, "");
+}
+
+namespace {
+
+void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
+  if (!f.exists("/scene/initial_ids"))
+    throw InputError("--restart", "", f.path().string() + " is not a checkpoint of a DEM hopper scene");
+  if (f.double_attribute("/scene", "slab_depth") != s.slab.depth)
+    throw InputError("--restart", "", "the checkpoint's slab depth differs from the case's [dem] slab_depth");
+  s.opening_time = f.double_attribute("/scene", "opening_time");
+  s.opening_step = static_cast<long>(f.integer_attribute("/scene", "opening_step"));
+  s.fill.inserted_mass = f.double_attribute("/scene", "inserted_mass");
+  s.fill.inserted_count = static_cast<std::size_t>(f.integer_attribute("/scene", "inserted_count"));
+  s.fill.trimmed_mass = f.double_attribute("/scene", "trimmed_mass");
+  s.fill.trimmed_count = static_cast<std::size_t>(f.integer_attribute("/scene", "trimmed_count"));
+  s.fill.sunk_mass = f.double_attribute("/scene", "sunk_mass");
+  s.fill.sunk_count = static_cast<std::size_t>(f.integer_attribute("/scene", "sunk_count"));
+  s.fill.settled = f.integer_attribute("/scene", "settled") != 0;
+  s.fill.target_reached = true;
+  s.initial_ids = f.read<std::uint32_t>("/scene/initial_ids");
+  s.initial_layers = f.read<double>("/scene/initial_layers");
+}
+
+}  // namespace
+
+std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& s, const SimulationRequest& request,
+                                              std::ostream& log) {
+  log << "DEM hopper scene (seed 3.1):\n" << s.slab.describe();
+  log << "  skipped: the 3D rig (a slab; masses x " << s.depth_scale()
+      << " = slot length / slab depth), the sliding side walls (a gate plane removed at the "
+         "opening), the fall below the outlet (particles deleted 5 R under it, mass booked), "
+         "the run after q_m has converged (95 % interval within +-5 %), an arch or emptying\n";
+  if (!request.restart.empty()) {
+    DemCheckpoint checkpoint;
+    try {
+      checkpoint = read_dem_checkpoint(request.restart);
+      const Hdf5File f(request.restart, Hdf5File::Mode::read);
+      restore_hopper_scene(s, f);
+    } catch (const std::runtime_error& e) {
+      if (dynamic_cast<const InputError*>(&e)) throw;
+      throw InputError("--restart", "", e.what());
+    }
+    DemEngine engine(s.settings, std::move(checkpoint));
+    engine.add_mesh_wall(s.slab.wedge_mesh());
+    log << "  restart from " << request.restart.string() << " (fill skipped; gate opened at t = "
+        << s.opening_time << " s)\n";
+    engine.prepare(log);
+    return engine;
+  }
+  DemEngine engine(s.settings, s.slab.box(), ParticleStore{});
+  s.slab.add_walls(engine);
+  RainFillSettings rain = s.slab.rain(s.density, s.bands, s.seed);
+  rain.progress = request.progress;
+  s.fill = rain_fill(engine, rain, log);
+  if (s.fill.interrupted) return std::nullopt;
+  // The gate goes at the next step; the bands are frozen as they are now.
+  s.opening_time = engine.time();
+  s.opening_step = engine.step();
+  engine.set_wall_removal_time("gate", s.opening_time);
+  const ParticleStore& p = engine.particles();
+  s.initial_ids = p.id;
+  s.initial_layers = p.layer;
+  char line[200];
+  std::snprintf(line, sizeof line, "  gate removed at t = %.4g s (step %ld), %zu particles, %.6g kg in the slab\n",
+                s.opening_time, s.opening_step, p.size(), p.total_mass());
+  log << line;
+  return engine;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,54 @@
+#pragma once
+// The DEM hopper scene of a case: the seed's pilot wedge hopper as a one-layer slab
+// (fullsim/dem/scene/wedge_hopper_slab.hpp) with the case's semi-angle, outlet, bin, fill
+// height and material, rain-filled, settled, trimmed at H and layer-banded, then the gate
+// opened; or the same scene restored from a checkpoint (the fill skipped).
+#include <cstdint>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "designer/case/case.hpp"
+#include "designer/simulate/simulation_request.hpp"
+#include "fullsim/common/hdf5_file.hpp"
+#include "fullsim/dem/dem_engine.hpp"
+#include "fullsim/dem/scene/rain_fill.hpp"
+#include "fullsim/dem/scene/wedge_hopper_slab.hpp"
+
+namespace feedflow {
+
+struct DemHopperScene {
+  WedgeHopperSlab slab;
+  DemSettings settings;
+  double density = 0.0;        // of the spheres [kg/m^3]
+  double slot_length = 0.0;    // the real out-of-plane length [m]
+  int bands = 10;              // initial-height bands for the flow pattern
+  std::uint64_t seed = 1;
+  double snapshot_interval = 0.0;  // [s]; 0: none
+  double default_duration = 20.0;  // [s] after the opening when neither --time nor [dem] says
+
+  // Known once filled (or restored):
+  double opening_time = 0.0;   // [s] the gate is removed
+  long opening_step = 0;
+  FillReport fill;             // counts and masses of the fill (a restored run: those saved)
+  std::vector<std::uint32_t> initial_ids;  // at the opening, with their bands
+  std::vector<double> initial_layers;
+
+  double depth_scale() const { return slot_length / slab.depth; }  // slab -> real depth
+};
+
+// Reads the scene from the case (wedge hopper, material with DEM parameters, [dem] table).
+// Throws InputError naming the key for a case the scene cannot build.
+DemHopperScene hopper_scene_from_case(const Case& c);
+
+// A new run: builds the walls and sink, rain-fills, settles, trims and opens the gate (at the
+// settled time). A restart: the checkpoint's particles, walls and sink, the wedge mesh, and
+// the scene's own data from its /scene group. Returns nullopt when Ctrl-C stopped the fill
+// (nothing to continue from).
+std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& scene, const SimulationRequest& request,
+                                              std::ostream& log);
+
+// The scene's data into a checkpoint's /scene group.
+void save_hopper_scene(const DemHopperScene& scene, Hdf5File& checkpoint);
+
+}  // namespace feedflow

@@ -1,0 +1,92 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "fullsim/dem/scene/wedge_hopper_slab.hpp"
+#include "tests/fullsim/dem/dem_test_scene.hpp"
+#include "tests/support/pine_table2.hpp"
+
+namespace feedflow {
+namespace {
+
+// A small wedge slab (30 deg, 60 mm outlet, 0.12 m bin, 0.1 m fill above the apex) of 3 mm
+// spheres, Hertz with the Table 2 friction.
+WedgeHopperSlab small_wedge() {
+  return WedgeHopperSlab{30.0 * std::numbers::pi / 180.0, 0.06, 0.12, 0.1, 6e-3, 3e-3, 0.3};
+}
+
+DemSettings twin_settings() {
+  DemSettings s;
+  s.material.particle = {3e-3, 390.0};
+  s.material.particle_particle = testing::pine_table2_particle_particle();
+  s.material.particle_wall = testing::pine_table2_particle_wall();
+  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
+  s.quiet = true;
+  return s;
+}
+
+// Mass bookkeeping: after filling, trimming and 0.25 s of discharge, every inserted sphere is
+// either in the domain, booked by the sink or trimmed, exactly once (ids), and the masses add
+// up to the inserted mass (same spheres: to the last bits but round-off of the sums).
+TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
+  const WedgeHopperSlab h = small_wedge();
+  DemEngine e(twin_settings(), h.box(), ParticleStore{});
+  h.add_walls(e);
+  std::ostringstream log;
+  RainFillSettings rain = h.rain(390.0, 5, 7);
+  rain.settle_time_cap = 0.1;
+  const FillReport f = rain_fill(e, rain, log);
+  e.set_wall_removal_time("gate", e.time());
+  e.run_until(e.time() + 0.25);
+  const OutletSink& sink = *e.outlet_sink();
+  ASSERT_GT(sink.removed_count(), 20u);  // it discharged
+  EXPECT_EQ(e.particles().size() + sink.removed_count() + f.trimmed_count, f.inserted_count);
+  std::set<std::uint32_t> ids(e.particles().id.begin(), e.particles().id.end());
+  for (const auto& ev : sink.events()) EXPECT_TRUE(ids.insert(ev.id).second) << "id twice: " << ev.id;
+  EXPECT_EQ(ids.size() + f.trimmed_count, f.inserted_count);
+  const double booked = e.particles().total_mass() + sink.removed_mass() + f.trimmed_mass;
+  EXPECT_NEAR(booked, f.inserted_mass, 1e-13 * f.inserted_mass);
+}
+
+// The fill sits inside the container: no centre closer than R to the wedge (the admits
+// predicate), trimmed at the fill top, and the bands count up from the outlet plane.
+TEST(WedgeHopperSlab, FillStaysInsideTheWedgeAndIsBanded) {
+  const WedgeHopperSlab h = small_wedge();
+  DemEngine e(twin_settings(), h.box(), ParticleStore{});
+  h.add_walls(e);
+  std::ostringstream log;
+  RainFillSettings rain = h.rain(390.0, 5, 3);
+  rain.settle_time_cap = 0.1;
+  rain_fill(e, rain, log);
+  const ParticleStore& p = e.particles();
+  ASSERT_GT(p.size(), 50u);
+  double top_layer = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec3& x = p.position[k];
+    EXPECT_LE(x.z(), h.fill_top());
+    EXPECT_GT(x.z(), 0.0);
+    // Distance to the inclined wall, measured along its normal (0.9 R: contact overlap allowed).
+    const double inside = (h.half_width(x.z()) - std::abs(x.x())) * std::cos(h.semi_angle);
+    EXPECT_GT(inside, 0.9 * h.radius) << "particle " << p.id[k];
+    EXPECT_EQ(p.layer[k], std::floor(x.z() / (h.fill_top() / 5)));
+    top_layer = std::max(top_layer, p.layer[k]);
+  }
+  EXPECT_GE(top_layer, 3.0);  // filled up to the upper bands
+}
+
+// Geometry of the seed's pilot hopper (data.md 2.1): apex 52 mm below a 60 mm outlet at 30 deg,
+// wedge-bin transition at 0.468 m, fill top 0.628 m above the outlet; a 3 mm slab of 3 mm
+// spheres is one layer (not periodic).
+TEST(WedgeHopperSlab, PilotGeometry) {
+  const WedgeHopperSlab h{30.0 * std::numbers::pi / 180.0, 0.06, 0.6, 0.68, 3e-3, 1.5e-3, 0.3};
+  EXPECT_NEAR(h.apex_depth(), 0.05196, 1e-5);
+  EXPECT_NEAR(h.bin_bottom(), 0.4677, 1e-4);
+  EXPECT_NEAR(h.fill_top(), 0.6280, 1e-4);
+  EXPECT_FALSE(h.periodic());
+}
+
+}  // namespace
+}  // namespace feedflow
