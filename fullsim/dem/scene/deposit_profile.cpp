@@ -1,0 +1,33 @@
+#include "fullsim/dem/scene/deposit_profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace feedflow {
+
+DepositProfile measure_deposit(const ParticleStore& p, double ramp_length, double surface,
+                               double bin_width) {
+  DepositProfile d;
+  const auto bins = static_cast<std::size_t>(std::ceil(ramp_length / bin_width));
+  d.x.resize(bins);
+  d.height.assign(bins, 0.0);
+  for (std::size_t b = 0; b < bins; ++b) d.x[b] = (static_cast<double>(b) + 0.5) * bin_width;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double x = p.position[i].x();
+    if (x < 0.0 || x >= ramp_length) continue;
+    const auto b = std::min(bins - 1, static_cast<std::size_t>(x / bin_width));
+    d.height[b] = std::max(d.height[b], p.position[i].z() + p.radius[i] - surface);
+    d.front = std::max(d.front, d.x[b]);
+  }
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t b = 0; b < bins; ++b)
+    if (std::abs(d.x[b] - 0.5 * ramp_length) <= 0.05 * ramp_length) {
+      sum += d.height[b];
+      ++n;
+    }
+  d.mid_ramp_height = n ? sum / n : 0.0;
+  return d;
+}
+
+}  // namespace feedflow

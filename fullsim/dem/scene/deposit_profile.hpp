@@ -1,0 +1,24 @@
+#pragma once
+// The deposit left on a ramp once the flow has stopped, measured as the seed's DEM did
+// (data.md 3: "h_stop = max particle height along the ramp"): the ramp is cut into bins along
+// the slope and each bin's height is the highest particle top (centre + radius) above the ramp
+// surface; h_stop is the mean height of the bins within 5 % of the ramp length of mid-ramp.
+#include <vector>
+
+#include "fullsim/dem/particle_store.hpp"
+
+namespace feedflow {
+
+struct DepositProfile {
+  std::vector<double> x;       // bin centres along the slope from the gate [m]
+  std::vector<double> height;  // highest particle top above the ramp surface [m] (0: empty bin)
+  double mid_ramp_height = 0.0;  // h_stop at mid-ramp [m]
+  double front = 0.0;          // farthest bin with a particle in it [m]
+};
+
+// Positions in the ramp frame: x along the slope from the gate, z normal to the ramp; the ramp
+// surface at z = `surface`. Bins of `bin_width` over [0, ramp_length].
+DepositProfile measure_deposit(const ParticleStore& particles, double ramp_length, double surface,
+                               double bin_width);
+
+}  // namespace feedflow

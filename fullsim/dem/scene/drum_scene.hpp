@@ -1,0 +1,83 @@
+#pragma once
+// The rotating-drum scene (seed section 3.3, data.md 4): a drum of diameter D turning about the
+// y axis (through the origin) as an analytic cylinder wall with the particle-wall set of Table 2;
+// full 3D with its two end walls (length L), or a periodic axial slab of `slab_depth` without
+// end walls (no end-wall friction: the angle comes out lower than in the full drum). Filled as
+// the seed did, by a random packing then gravity settling: a jittered lattice in the lower part
+// of the drum is let fall and settle until the largest speed is below `settle_speed`, the
+// particles above the fill line (the flat chord of the fill fraction f) are removed and the bed
+// settles again; then the shell starts turning at `speed` (the bed was filled at rest).
+//
+//   DrumScene drum(settings, spec);
+//   drum.fill(log);
+//   drum.start_rotation(log);
+//   while (...) { drum.engine().run_until(t); watch.add(drum.sample()); }
+#include <memory>
+#include <optional>
+#include <ostream>
+
+#include "fullsim/dem/dem_engine.hpp"
+#include "fullsim/dem/scene/drum_bed_regime.hpp"
+#include "fullsim/dem/scene/drum_free_surface.hpp"
+
+namespace feedflow {
+
+struct DrumSceneSpec {
+  double diameter = 0.145;              // [m]
+  double length = 0.202;                // [m] between the end walls (full 3D)
+  double fill_fraction = 0.5;           // of the cross-section [-]
+  double speed = 0.0;                   // [rad/s], about +y
+  std::optional<double> slab_depth;     // [m] periodic slab along the axis; none: full 3D
+  unsigned seed = 1;                    // of the lattice jitter
+  double settle_speed = 0.05;           // [m/s] settled when the largest speed is below
+  double max_settle_time = 3.0;         // [s] per settling phase
+};
+
+// One measurement of the turning bed.
+struct DrumSample {
+  double time = 0.0;          // [s] since the shell started turning
+  bool valid = false;         // a surface line could be fitted
+  double angle = 0.0;         // dynamic angle of repose [rad] (surface raised on the side the
+                              // shell carries the bed to: positive)
+  DrumBedState state;         // angle_swing is 0 for a single sample
+  std::vector<SurfacePoint> surface;  // the surface points (column centres, heights) [m]
+  double kinetic_energy = 0.0;  // [J]
+};
+
+class DrumScene {
+ public:
+  DrumScene(DemSettings settings, DrumSceneSpec spec);
+  // A run restored from a checkpoint of this scene (taken while turning or settling).
+  DrumScene(DemSettings settings, DrumSceneSpec spec, DemCheckpoint checkpoint);
+
+  // Packing, settling, trimming to the fill line, settling (logs each phase).
+  void fill(std::ostream& log);
+  // The shell turns from now on; the sampling clock starts.
+  void start_rotation(std::ostream& log);
+
+  DrumSample sample() const;
+  DemEngine& engine() { return *engine_; }
+  const DemEngine& engine() const { return *engine_; }
+  const DrumSceneSpec& spec() const { return spec_; }
+  double rotation_start() const { return rotation_start_; }
+  // A restored run's rotation start (saved beside its checkpoint) [s].
+  void set_rotation_start(double t) { rotation_start_ = t; }
+  double fill_line() const;  // z of the flat fill chord [m]
+  double slab_depth() const;  // periodic depth or the full length [m]
+  bool is_slab() const { return spec_.slab_depth.has_value(); }
+  // Particles above the fill line removed after the first settling (0: the bed fell short of
+  // the fill line, the fill fraction is lower than asked).
+  std::size_t trimmed() const { return trimmed_; }
+
+ private:
+  void settle(std::ostream& log, const char* phase);
+  void rebuild(DemCheckpoint checkpoint);
+
+  DemSettings settings_;
+  DrumSceneSpec spec_;
+  std::unique_ptr<DemEngine> engine_;
+  double rotation_start_ = 0.0;
+  std::size_t trimmed_ = 0;
+};
+
+}  // namespace feedflow

@@ -1,0 +1,84 @@
+// `feedflow simulate --solver dem` on the drum and inclined-plane cases, as a user runs it, on
+// reduced twins set from the command line (coarse particles R = 3 mm, Hertz normal law, 18 mm slab)
+// so each run takes seconds: exit 0, results.json with rung L3 results, timeseries.csv and the
+// checkpoint written, the reduced-model values beside the DEM ones.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using feedflow::testing::run_feedflow;
+using feedflow::testing::slurp;
+
+namespace {
+
+class SimulateDem : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           (std::string("feedflow_simdem_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    fs::copy(fs::path(FEEDFLOW_SOURCE_DIR) / "cases", dir_ / "cases", fs::copy_options::recursive);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+const char* kTwin =
+    " --set dem.slab_depth=18mm --set dem.normal_law=hertz --set material.dem.particle.radius=3mm";
+
+// The seed drum at 20 rpm for 1.2 s of rotation: the DEM angle and regime come with rung L3
+// (the angle with a band around it), beside the reduced model's (feedflow design) values; the
+// time series has the angle column.
+TEST_F(SimulateDem, DrumWritesRungL3AngleAndRegime) {
+  const auto r = run_feedflow(std::string("simulate cases/rotating_drum_20rpm.toml --solver dem --time 1.2s") +
+                                  kTwin + " --out run",
+                              dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
+  const auto& results = json.at("results");
+  EXPECT_EQ(results.at("regime").at("rung"), "L3");
+  EXPECT_NE(results.at("regime").at("value"), "not measured");
+  const auto& angle = results.at("dynamic_angle_of_repose");
+  EXPECT_EQ(angle.at("rung"), "L3");
+  EXPECT_EQ(angle.at("unit"), "deg");
+  const double a = angle.at("value").get<double>();
+  EXPECT_GT(a, 20.0);
+  EXPECT_LT(a, 70.0);
+  EXPECT_LE(angle.at("low").get<double>(), a);
+  EXPECT_GE(angle.at("high").get<double>(), a);
+  EXPECT_EQ(results.at("reduced_model_dynamic_angle_of_repose").at("rung"), "L0");
+  EXPECT_NE(slurp(dir_ / "run/timeseries.csv").find("dynamic_angle_of_repose [deg]"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "run/checkpoint.h5"));
+}
+
+// Restart: a drum run stopped at 0.4 s of rotation and continued from its checkpoint to 0.8 s
+// writes the same time series, to the last digit, as an uninterrupted 0.8 s run (the angle, the
+// bed state and the kinetic energy at every sample).
+TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
+  const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin;
+  ASSERT_EQ(run_feedflow(run + " --time 0.8s --out whole", dir_).exit_code, 0);
+  ASSERT_EQ(run_feedflow(run + " --time 0.4s --out first", dir_).exit_code, 0);
+  const auto r = run_feedflow(run + " --time 0.8s --restart first/checkpoint.h5 --out second", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string whole = slurp(dir_ / "whole/timeseries.csv");
+  EXPECT_GT(std::count(whole.begin(), whole.end(), '\n'), 30);
+  EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
+}
+
+// A slab thinner than two neighbour cutoffs is refused naming the key (exit 2), and no output
+// folder is left behind.
+TEST_F(SimulateDem, DrumRefusesTooThinSlab) {
+  const auto r = run_feedflow(
+      "simulate cases/rotating_drum_20rpm.toml --solver dem --time 1s --set dem.slab_depth=3mm --out run", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("dem.slab_depth"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "run"));
+}
+
+}  // namespace
