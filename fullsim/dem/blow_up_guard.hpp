@@ -27,6 +27,12 @@ class BlowUpGuard {
   // At the start of a run: the kinetic energy and the energy floor [J]; `wall_speed` is the
   // fastest wall surface speed the floor allows for (0: no moving walls) [m/s].
   void start(double kinetic_energy, double floor, double wall_speed = 0.0);
+  // Raises the floor to at least `floor` [J] for walls moving up to `wall_speed` [m/s] (a
+  // restored run whose walls were set moving after the checkpoint).
+  void allow_moving_walls(double floor, double wall_speed) {
+    floor_ = floor_ > floor ? floor_ : floor;
+    wall_speed_ = wall_speed;
+  }
   // Work done by gravity during one step [J].
   void add_gravity_work(double work) { gravity_work_ += work; }
   // Kinetic energy brought in by particles inserted during the run [J] (booked as initial).

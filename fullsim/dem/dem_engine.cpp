@@ -213,9 +213,18 @@ void DemEngine::prepare(std::ostream& out) {
 
   guard_ = BlowUpGuard(settings_.guard, stable.value);
 
+  const double v_design = settings_.time_step.max_velocity;
+  const double mass = particles_.total_mass();
+  const double v_wall = fastest_wall_surface_speed();
+  // Walls that move feed energy: allow every grain carried at the fastest wall surface speed
+  // and dropped over the bed's height.
+  const double v_fed = v_wall > 0.0 ? v_wall + std::sqrt(2.0 * settings_.gravity.norm() * bed_height()) : 0.0;
   if (pending_) {
-    // A restored run keeps its list, forces and energy book as they were.
+    // A restored run keeps its list, forces and energy book as they were; walls set moving
+    // since the checkpoint was taken (a drum started after settling) raise its floor.
     restore_prepared_state();
+    if (v_wall > 0.0)
+      guard_.allow_moving_walls(0.5 * mass * (v_design * v_design + v_fed * v_fed), v_wall);
   } else {
     neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
     particles_.set_wall_history_stride(wall_history_stride());
@@ -223,18 +232,9 @@ void DemEngine::prepare(std::ostream& out) {
     reset_forces();
     compute_forces();
     // Floor: every particle moving at the design speed of the time step (initial overlaps may
-    // release elastic energy the guard cannot book).
-    const double v_design = settings_.time_step.max_velocity;
-    const double mass = particles_.total_mass();
-    const double v_wall = fastest_wall_surface_speed();
-    double floor = 0.5 * mass * v_design * v_design;
-    if (v_wall > 0.0) {
-      // Walls that move feed energy: allow every grain carried at the fastest wall surface
-      // speed and dropped over the bed's height.
-      const double v = v_wall + std::sqrt(2.0 * settings_.gravity.norm() * bed_height());
-      floor += 0.5 * mass * v * v;
-    }
-    guard_.start(particles_.kinetic_energy(), floor, v_wall);
+    // release elastic energy the guard cannot book), plus what moving walls feed.
+    guard_.start(particles_.kinetic_energy(), 0.5 * mass * (v_design * v_design + v_fed * v_fed),
+                 v_wall);
   }
   plan_ = make_plan();
   out << plan_;
