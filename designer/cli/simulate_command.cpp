@@ -74,6 +74,7 @@ int run_simulate(const SimulateArguments& args) {
   request.restart = args.restart;
   request.progress = !args.options.quiet && isatty(STDERR_FILENO);
   request.log = args.options.human_output() ? &std::cout : nullptr;
+  if (request.log) std::cout << std::unitbuf;  // a run logged to a file shows its phases as they come
   const bool folder_is_new = !std::filesystem::exists(request.out);
   try {
     std::filesystem::create_directories(request.out);
