@@ -7,6 +7,7 @@
 
 namespace fs = std::filesystem;
 using feedflow::testing::run_feedflow;
+using feedflow::testing::scratch_folder;
 using feedflow::testing::slurp;
 
 namespace {
@@ -14,11 +15,7 @@ namespace {
 class ElementTestCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           (std::string("feedflow_element_test_") +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = scratch_folder("feedflow_element_test", false);
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;

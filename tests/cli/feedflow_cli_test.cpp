@@ -8,6 +8,7 @@
 
 namespace fs = std::filesystem;
 using feedflow::testing::run_feedflow;
+using feedflow::testing::scratch_folder;
 using feedflow::testing::slurp;
 
 namespace {
@@ -16,11 +17,7 @@ namespace {
 class FeedflowCli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           (std::string("feedflow_cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    fs::copy(fs::path(FEEDFLOW_SOURCE_DIR) / "cases", dir_ / "cases", fs::copy_options::recursive);
+    dir_ = scratch_folder("feedflow_cli", true);
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;

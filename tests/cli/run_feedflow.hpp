@@ -6,6 +6,9 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 namespace feedflow::testing {
 
@@ -20,6 +23,20 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// A fresh folder for the running test, <tmp>/<prefix>_<test name>_<pid> (the pid keeps two
+// checkouts testing at once apart), holding a copy of cases/ when asked (a user's checkout).
+inline std::filesystem::path scratch_folder(const std::string& prefix, bool with_cases) {
+  namespace fs = std::filesystem;
+  const auto dir = fs::temp_directory_path() /
+                   (prefix + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name() +
+                    "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  if (with_cases)
+    fs::copy(fs::path(FEEDFLOW_SOURCE_DIR) / "cases", dir / "cases", fs::copy_options::recursive);
+  return dir;
 }
 
 // `args` is appended to the command line as is (the caller quotes).
