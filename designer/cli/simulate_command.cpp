@@ -21,7 +21,6 @@
 #include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/interrupt_request.hpp"
 #include "models/core/errors.hpp"
-#include "models/core/version.hpp"
 #include "models/units/quantity_parser.hpp"
 #include "reports/results_json.hpp"
 #include "reports/text_summary.hpp"
@@ -94,12 +93,7 @@ int run_simulate(const SimulateArguments& args) {
     throw;
   }
   DesignRecord& record = outcome.record;
-  record.feedflow_version = kVersion;
-  record.case_name = c.name;
-  record.kind = c.kind();
-  record.case_file = c.file;
-  record.description = c.description;
-  record.inputs = case_inputs(c);
+  describe_case(c, record);
   record.assumptions.insert(record.assumptions.begin(), choice.reason);
   record.command_line = invocation();
   record.wall_seconds =

@@ -1,5 +1,6 @@
 #include "designer/design/case_inputs.hpp"
 
+#include "models/core/version.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
@@ -99,6 +100,15 @@ std::vector<InputValue> case_inputs(const Case& c) {
     out.push_back(std::move(d.value));
   }
   return out;
+}
+
+void describe_case(const Case& c, DesignRecord& record) {
+  record.feedflow_version = kVersion;
+  record.case_name = c.name;
+  record.kind = c.kind();
+  record.case_file = c.file;
+  record.description = c.description;
+  record.inputs = case_inputs(c);
 }
 
 }  // namespace feedflow

@@ -11,6 +11,9 @@ namespace feedflow {
 
 std::vector<InputValue> case_inputs(const Case& c);
 
+// Fills what a record says of its case: version, name, kind, file, description and inputs.
+void describe_case(const Case& c, DesignRecord& record);
+
 // One parameter of a material, as `feedflow materials NAME` lists it.
 struct MaterialParameter {
   InputValue value;         // key without the "material." prefix: "bulk.density"; with its source

@@ -5,18 +5,12 @@
 #include "designer/design/drum_check.hpp"
 #include "designer/design/hopper_check.hpp"
 #include "designer/design/verdict_builder.hpp"
-#include "models/core/version.hpp"
 
 namespace feedflow {
 
 DesignRecord design_check(const Case& c, const ModelChoices& models) {
   DesignRecord record;
-  record.feedflow_version = kVersion;
-  record.case_name = c.name;
-  record.kind = c.kind();
-  record.case_file = c.file;
-  record.description = c.description;
-  record.inputs = case_inputs(c);
+  describe_case(c, record);
   VerdictBuilder verdict;
   std::visit(
       [&](const auto& equipment) {
