@@ -159,12 +159,9 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
                          Rung::L3, ""});
   // The reduced-model values of the same quantities (feedflow design).
   const DesignRecord reduced = design_check(c);
-  if (const Estimate* e = find_result(reduced, "dynamic_angle_of_repose")) {
-    Estimate copy = *e;
-    record.results.emplace_back("reduced_model_dynamic_angle_of_repose", copy);
-  }
-  if (const Estimate* e = find_result(reduced, "regime"))
-    record.results.emplace_back("reduced_model_regime", *e);
+  for (const char* name : {"dynamic_angle_of_repose", "regime"})
+    if (const Estimate* e = find_result(reduced, name))
+      record.results.emplace_back(std::string("reduced_model_") + name, *e);
   record.results.emplace_back("particles", Estimate{n, "", std::nullopt, std::nullopt, "DEM scene", Rung::L3, ""});
   if (steady)
     record.results.emplace_back("steady_window", Estimate{steady->to - steady->from, "s", steady->from, steady->to,

@@ -9,6 +9,7 @@
 #include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/dem_hopper_scene.hpp"
 #include "designer/simulate/dem_scene_run.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
 #include "fullsim/dem/scene/discharge_measurement.hpp"
 #include "fullsim/dem/scene/flow_order.hpp"
 #include "models/core/errors.hpp"
@@ -54,12 +55,6 @@ DischargeState state_of(const DemEngine& e, double opening_time, const ArchCrite
   if (sink && !sink->events().empty()) last = std::max(last, sink->events().back().time);
   return discharge_state(e.time(), last, e.kinetic_energy(), e.particles().total_mass(),
                          e.particles().size(), arch);
-}
-
-const Estimate* find(const DesignRecord& r, const std::string& name) {
-  for (const auto& [n, e] : r.results)
-    if (n == name) return &e;
-  return nullptr;
 }
 
 Estimate number(double v, const std::string& unit, std::optional<double> lo,
@@ -196,7 +191,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
   // The reduced models beside it.
   const DesignRecord reduced = design_check(c);
   for (const char* name : {"mass_flow_rate", "critical_outlet_width", "flow_pattern"})
-    if (const Estimate* e = find(reduced, name)) record.results.emplace_back(std::string(name) + "_reduced", *e);
+    if (const Estimate* e = find_result(reduced, name)) record.results.emplace_back(std::string(name) + "_reduced", *e);
 
   VerdictBuilder verdict;
   if (arched) verdict.fail("the DEM slab arches over the outlet");
@@ -218,7 +213,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
     dem.y.push_back(r[2] * scale);
   }
   chart.series.push_back(dem);
-  if (const Estimate* q = find(reduced, "mass_flow_rate"); q && q->is_number() && !dem.x.empty()) {
+  if (const Estimate* q = find_result(reduced, "mass_flow_rate"); q && q->is_number() && !dem.x.empty()) {
     const double qr = std::get<double>(q->value);
     const double t0 = rate.found ? rate.window_start : 0.0;
     double m0 = 0.0;
