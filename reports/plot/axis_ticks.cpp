@@ -1,5 +1,6 @@
 #include "reports/plot/axis_ticks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -15,7 +16,9 @@ double nice_step(double raw) {
   return 10.0 * magnitude;
 }
 
-std::string label_for(double value, double step) {
+}  // namespace
+
+std::string tick_label(double value, double step) {
   if (value == 0.0 || std::abs(value) < step * 1e-9) return "0";
   const double a = std::abs(value);
   char buf[48];
@@ -34,7 +37,22 @@ std::string label_for(double value, double step) {
   return buf;
 }
 
-}  // namespace
+double round_length_below(double limit) {
+  const double decade = std::pow(10.0, std::floor(std::log10(limit)));
+  for (const double m : {5.0, 2.0, 1.0})
+    if (m * decade <= limit * (1.0 + 1e-12)) return m * decade;
+  return decade;
+}
+
+std::vector<double> ticks_inside(double lo, double hi, int target) {
+  if (!(hi > lo)) return {lo};
+  const double step = round_length_below((hi - lo) / std::max(1, target - 1));
+  std::vector<double> ticks;
+  const double first = std::ceil(lo / step - 1e-9) * step;
+  for (double t = first; t <= hi + 1e-9 * step; t = first + step * static_cast<double>(ticks.size()))
+    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  return ticks;
+}
 
 AxisTicks linear_ticks(double lo, double hi, int target) {
   if (!std::isfinite(lo) || !std::isfinite(hi))
@@ -53,7 +71,7 @@ AxisTicks linear_ticks(double lo, double hi, int target) {
   for (int i = 0; i <= count; ++i) {
     const double v = t.lower + i * step;
     t.values.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
-    t.labels.push_back(label_for(t.values.back(), step));
+    t.labels.push_back(tick_label(t.values.back(), step));
   }
   return t;
 }
@@ -72,7 +90,7 @@ AxisTicks log_ticks(double lo, double hi) {
     t.values.push_back(std::pow(10.0, e));
     char buf[16];
     std::snprintf(buf, sizeof buf, "1e%d", e);
-    t.labels.push_back(e >= -3 && e <= 4 ? label_for(t.values.back(), t.values.back()) : buf);
+    t.labels.push_back(e >= -3 && e <= 4 ? tick_label(t.values.back(), t.values.back()) : buf);
   }
   return t;
 }

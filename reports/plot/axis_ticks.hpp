@@ -1,6 +1,7 @@
 #pragma once
-// Tick positions and labels for a chart axis: "nice" steps (1, 2, 5 x 10^k) that cover the
-// data range, labels with just enough decimals, decades on logarithmic axes.
+// Tick positions and labels: "nice" steps (1, 2, 5 x 10^k) for chart axes that cover the data
+// range, round values inside a fixed range for colour bars, round lengths for scale bars, labels
+// with just enough decimals, decades on logarithmic axes.
 #include <string>
 #include <vector>
 
@@ -19,5 +20,15 @@ AxisTicks linear_ticks(double data_min, double data_max, int target = 6);
 
 // Logarithmic axis (data_min > 0): ticks at whole decades.
 AxisTicks log_ticks(double data_min, double data_max);
+
+// Ticks at multiples of a round step (1, 2 or 5 x 10^k) inside [lo, hi], about `target` of them
+// (at least two when lo < hi); {lo} when lo == hi. For a colour bar, whose range is fixed.
+std::vector<double> ticks_inside(double lo, double hi, int target = 5);
+
+// The largest 1, 2 or 5 x 10^k not above `limit` (> 0): a scale-bar length.
+double round_length_below(double limit);
+
+// A tick label with as many decimals as the step needs ("0.25", "12", "-3.5", "2.5e-05").
+std::string tick_label(double value, double step);
 
 }  // namespace feedflow

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "reports/render/cairo_bridge.hpp"
-#include "reports/render/ticks.hpp"
+#include "reports/plot/axis_ticks.hpp"
 
 namespace feedflow::render {
 
@@ -52,7 +52,7 @@ void colour_bar_labels(cairo_t* cr, const SnapshotLayout& layout, const ColourSc
   cairo_set_line_width(cr, 1.0);
   cairo_rectangle(cr, bar.x - 0.5, bar.y - 0.5, bar.width + 1.0, bar.height + 1.0);
   cairo_stroke(cr);
-  const std::vector<double> ticks = round_ticks(scale.lo, scale.hi, 6);
+  const std::vector<double> ticks = ticks_inside(scale.lo, scale.hi, 6);
   const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : std::max(std::abs(scale.lo), 1.0);
   const double tick_length = 0.4 * f;
   for (double t : ticks) {

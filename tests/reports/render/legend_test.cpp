@@ -5,7 +5,7 @@
 
 #include "reports/render/colour_map.hpp"
 #include "reports/render/legend_overlay.hpp"
-#include "reports/render/ticks.hpp"
+#include "reports/plot/axis_ticks.hpp"
 
 namespace feedflow::render {
 namespace {
@@ -46,15 +46,15 @@ TEST(ColourMap, LayerColoursDiffer) {
 
 // Ticks are round numbers inside the range, for awkward ranges too.
 TEST(Ticks, RoundValuesInsideTheRange) {
-  const auto unit = round_ticks(0.0, 1.0, 6);
+  const auto unit = ticks_inside(0.0, 1.0, 6);
   ASSERT_EQ(unit.size(), 6u);
   for (std::size_t k = 0; k < unit.size(); ++k) EXPECT_NEAR(unit[k], 0.2 * k, 1e-12);
-  const auto awkward = round_ticks(0.137, 0.912, 6);
+  const auto awkward = ticks_inside(0.137, 0.912, 6);
   ASSERT_GE(awkward.size(), 3u);
   EXPECT_NEAR(awkward.front(), 0.2, 1e-12);
   EXPECT_NEAR(awkward[1] - awkward[0], 0.1, 1e-12);
   EXPECT_LE(awkward.back(), 0.912);
-  EXPECT_EQ(round_ticks(5.0, 5.0).size(), 1u);
+  EXPECT_EQ(ticks_inside(5.0, 5.0).size(), 1u);
   EXPECT_EQ(tick_label(0.2, 0.1), "0.2");
   EXPECT_EQ(tick_label(1500.0, 500.0), "1500");
   EXPECT_EQ(tick_label(-0.05, 0.05), "-0.05");
