@@ -75,6 +75,10 @@ class LawForces final : public ForceKernel {
     double* history = c.neighbours.history.data();
     const SimulationBox box = c.box;
     const double dt = c.dt;
+    // A bed of equal spheres (one species) has the same R*, m* and I* for every pair: taken once
+    // here by the very same expressions, so the results stay bit for bit those of the general
+    // loop, without three divisions per contact.
+    const UniformBodies uniform = uniform_bodies(p, c.neighbours.rebuild_count());
 
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
@@ -87,55 +91,94 @@ class LawForces final : public ForceKernel {
       std::vector<Reaction>& queue = own_[tid].queue;
       queue.clear();
       DeepestOverlap worst;
+      // Two passes over batches of entries: the first finds the touching pairs and their
+      // kinematics (short, independent iterations the core overlaps, hiding the latency of
+      // the square root and division of each), the second runs the law on them in the same
+      // order. Row i's own force and torque are summed in a local and added when its row is
+      // done, as a single pass would, so the sums are the same bit for bit.
+      std::array<Touching, kBatch> batch;
+      std::size_t row = begin;  // the row whose force is being summed
+      Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
+      auto run_batch = [&](std::size_t count) {
+        for (std::size_t k = 0; k < count; ++k) {
+          Touching& b = batch[k];
+          if (b.i != row) {
+            force[row] += fi;
+            torque[row] += ti;
+            fi.setZero();
+            ti.setZero();
+            row = b.i;
+          }
+          double* h = history + static_cast<std::size_t>(b.entry) * kHistory;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_particle_.evaluate(b.in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          const Vec3 f = out.normal_force * b.in.normal + out.tangential_force;
+          const Vec3 lever = b.in.normal.cross(out.tangential_force);
+          fi += f;
+          ti += out.rolling_torque - b.ci * lever;
+          const Vec3 tj = -(out.rolling_torque + b.cj * lever);
+          const std::size_t j = b.j;
+          if (j >= begin && j < end) {
+            force[j] -= f;
+            torque[j] += tj;
+          } else {
+            queue.push_back({b.j, -f, tj});
+          }
+          const double smaller = std::min(rad[b.i], rad[j]);
+          if (b.in.overlap > worst.ratio * smaller) worst = {b.in.overlap / smaller, b.i, false};
+        }
+      };
+      std::size_t count = 0;
       for (std::size_t i = begin; i < end; ++i) {
         const Vec3 xi = x[i];
         const double ri = rad[i];
-        Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
         for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
           const std::size_t j = partner[e];
-          double* h = history + static_cast<std::size_t>(e) * kHistory;
           const Vec3 d = box.minimum_image(xi - x[j]);
           const double rj = rad[j];
           const double reach = ri + rj;
           const double r2 = d.squaredNorm();
           if (r2 >= reach * reach) {
-            clear(h);
+            clear(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
           const double r = std::sqrt(r2);
-          ContactInput in;
+          Touching& b = batch[count];
+          b.i = static_cast<std::uint32_t>(i);
+          b.j = static_cast<std::uint32_t>(j);
+          b.entry = e;
+          ContactInput& in = b.in;
           in.overlap = reach - r;
           in.normal = d * (1.0 / r);
-          const double ci = ri - 0.5 * in.overlap, cj = rj - 0.5 * in.overlap;
+          b.ci = ri - 0.5 * in.overlap;
+          b.cj = rj - 0.5 * in.overlap;
           const Vec3 vr = v[i] - v[j];
           in.normal_velocity = vr.dot(in.normal);
           in.tangential_velocity =
-              vr - in.normal_velocity * in.normal + in.normal.cross(ci * w[i] + cj * w[j]);
+              vr - in.normal_velocity * in.normal + in.normal.cross(b.ci * w[i] + b.cj * w[j]);
           in.relative_angular_velocity = w[i] - w[j];
-          in.effective_radius = ri * rj / reach;
-          in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
-          in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
-          in.dt = dt;
-          History hist;
-          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-          const ContactOutput out = particle_particle_.evaluate(in, hist);
-          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
-          const Vec3 f = out.normal_force * in.normal + out.tangential_force;
-          const Vec3 lever = in.normal.cross(out.tangential_force);
-          fi += f;
-          ti += out.rolling_torque - ci * lever;
-          const Vec3 tj = -(out.rolling_torque + cj * lever);
-          if (j >= begin && j < end) {
-            force[j] -= f;
-            torque[j] += tj;
+          if (uniform.yes) {
+            in.effective_radius = uniform.radius;
+            in.effective_mass = uniform.mass;
+            in.effective_inertia = uniform.inertia;
           } else {
-            queue.push_back({static_cast<std::uint32_t>(j), -f, tj});
+            in.effective_radius = ri * rj / reach;
+            in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
+            in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
           }
-          const double smaller = std::min(ri, rj);
-          if (in.overlap > worst.ratio * smaller) worst = {in.overlap / smaller, i, false};
+          in.dt = dt;
+          if (++count == kBatch) {
+            run_batch(count);
+            count = 0;
+          }
         }
-        force[i] += fi;
-        torque[i] += ti;
+      }
+      run_batch(count);
+      if (begin < end) {
+        force[row] += fi;
+        torque[row] += ti;
       }
       own_[tid].worst = worst;
 #pragma omp barrier
@@ -239,6 +282,33 @@ class LawForces final : public ForceKernel {
   }
 
  private:
+  // A touching pair found by the first pass of the pair loop, with what the law needs.
+  struct Touching {
+    ContactInput in;
+    double ci = 0.0, cj = 0.0;  // distances from the centres to the contact point [m]
+    std::uint32_t i = 0, j = 0, entry = 0;
+  };
+  static constexpr std::size_t kBatch = 32;
+  struct UniformBodies {
+    bool yes = false;
+    double radius = 0.0, mass = 0.0, inertia = 0.0;  // R*, m*, I* of every pair
+  };
+  // Whether all particles share radius, mass and inertia, and then the pair constants. Looked
+  // at again only after a rebuild (insertion, removal and re-sorting all rebuild the list).
+  UniformBodies uniform_bodies(const ParticleStore& p, std::size_t rebuild) {
+    if (uniform_rebuild_ == rebuild && uniform_count_ == p.size()) return uniform_;
+    uniform_rebuild_ = rebuild;
+    uniform_count_ = p.size();
+    uniform_ = {};
+    if (p.size() == 0) return uniform_;
+    const double r = p.radius[0], m = p.mass[0], in = p.inertia[0];
+    for (std::size_t k = 1; k < p.size(); ++k)
+      if (p.radius[k] != r || p.mass[k] != m || p.inertia[k] != in) return uniform_;
+    const double reach = r + r;
+    uniform_ = {true, r * r / reach, m * m / (m + m), in * in / (in + in)};
+    return uniform_;
+  }
+
   // One particle-wall contact with the P-W set: adds its force and torque to particle i and
   // returns the overlap over the radius.
   double apply_wall_contact(ParticleStore& p, std::size_t i, double gap, const Vec3& normal,
@@ -302,6 +372,9 @@ class LawForces final : public ForceKernel {
     DeepestOverlap worst;
   };
   std::vector<ThreadShare> own_;
+  UniformBodies uniform_;
+  std::size_t uniform_rebuild_ = static_cast<std::size_t>(-1);
+  std::size_t uniform_count_ = 0;
 };
 
 }  // namespace feedflow
