@@ -21,7 +21,7 @@ namespace feedflow {
 namespace {
 
 std::string format(const char* fmt, auto... args) {
-  char buf[400];
+  char buf[700];
   std::snprintf(buf, sizeof buf, fmt, args...);
   return buf;
 }
@@ -212,6 +212,7 @@ void DemEngine::prepare(std::ostream& out) {
   time_step_ = choose_time_step(stable, settings_.requested_time_step, settings_.force_time_step);
 
   guard_ = BlowUpGuard(settings_.guard, stable.value);
+  checked_ratio_ = settings_.time_step.design_overlap;  // the design springs hold up to here
 
   const double v_design = settings_.time_step.max_velocity;
   const double mass = particles_.total_mass();
@@ -274,6 +275,10 @@ std::string DemEngine::make_plan() const {
               thread_count(),
               particles_.size() >= settings_.parallel_from ? "" : "; this small system runs on one");
   s << "  " << guard_.describe() << '\n';
+  s << format("  live step check: the springs of the deepest contact are re-taken whenever it "
+              "passes %.3g R (then each 5 %% deeper); a warning above their stable step, a stop "
+              "above period / pi\n",
+              settings_.time_step.design_overlap);
   return s.str();
 }
 
@@ -306,6 +311,31 @@ void DemEngine::compute_forces() {
     walls = kernel_->add_wall_forces(c);
   }
   guard_.check_overlap(pairs.ratio >= walls.ratio ? pairs : walls, particles_, step_);
+  check_current_springs(pairs, walls);
+}
+
+void DemEngine::check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls) {
+  // Every law's springs stiffen with the overlap, and the design springs of prepare() hold up
+  // to the design overlap; the springs are looked at again only when the deepest contact is
+  // 5 % deeper than the deepest looked at so far (a few times in a run, not every step).
+  const double deepest = std::max(pairs.ratio, walls.ratio);
+  if (!(deepest > 1.05 * checked_ratio_)) return;
+  checked_ratio_ = deepest;
+  const StiffestSpring now =
+      current_springs(settings_.material, effective_law_, pairs.ratio, walls.ratio);
+  if (now.empty()) return;
+  const StableTimeStep live = stable_time_step(settings_.material, now, settings_.time_step);
+  const DeepestOverlap& at = pairs.ratio >= walls.ratio ? pairs : walls;
+  guard_.check_spring(time_step_.value, now.period(), now.description(), live.value, particles_,
+                      at.slot, step_);
+  if (spring_warning_.empty() && time_step_.value > live.value) {
+    spring_warning_ = format("warning: at step %ld the deepest contacts (P-P %.3g R, P-W %.3g R) "
+                             "are stiffer than the time step allows: %.4g s exceeds their stable "
+                             "step %.4g s (%s); the run goes on, watched by the blow-up guard",
+                             step_, pairs.ratio, walls.ratio, time_step_.value, live.value,
+                             now.description().c_str());
+    std::cerr << spring_warning_ << '\n';
+  }
 }
 
 void DemEngine::one_step() {

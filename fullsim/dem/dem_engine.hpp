@@ -111,6 +111,9 @@ class DemEngine {
   const RunReport& report() const { return report_; }
   double kinetic_energy() const { return particles_.kinetic_energy(); }
   double max_speed() const;
+  // The warning given (once, also on stderr) when a contact grew stiffer than the time step
+  // allows with its safety factor; empty if none.
+  const std::string& spring_warning() const { return spring_warning_; }
   // The particle-steps run so far.
   double particle_steps() const { return particle_steps_; }
 
@@ -118,6 +121,10 @@ class DemEngine {
   void rebuild_neighbours();
   void reset_forces();    // to the weight, no torque
   void compute_forces();  // adds the contact forces
+  // The time step against the springs of the deepest current contacts (issue 5: the step
+  // comes from the stiffest current spring): warns once when it exceeds their stable step,
+  // stops the run through the guard when it exceeds their stability limit.
+  void check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls);
   void one_step();
   std::string make_plan() const;
   void restore_prepared_state();            // from pending_, in prepare()
@@ -146,6 +153,8 @@ class DemEngine {
   long step_ = 0;
   double particle_steps_ = 0.0;
   double run_seconds_ = 0.0;
+  double checked_ratio_ = 0.0;  // overlap / radius whose springs were checked last
+  std::string spring_warning_;
 };
 
 }  // namespace feedflow
