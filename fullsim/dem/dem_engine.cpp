@@ -338,20 +338,31 @@ void DemEngine::check_current_springs(const DeepestOverlap& pairs, const Deepest
   }
 }
 
-void DemEngine::one_step() {
+void DemEngine::one_step(bool last) {
   const double dt = time_step_.value;
   const std::size_t n = particles_.size();
   ParticleStore& p = particles_;
-  // First half kick and drift; the forces are then reset to the weight, and the largest
-  // displacement since the last rebuild is taken on the way (no separate pass).
-  double moved2 = 0.0;
+  const Vec3 g = settings_.gravity;
+  // The second half kick of the step before (when it was left pending) and the first half
+  // kick and drift of this one, in one pass over the particles; the forces are then reset to
+  // the weight, and the largest displacement since the last rebuild is taken on the way.
+  // Per particle the operations and their order are those of two separate passes.
+  const bool finish_before = kick_pending_;
+  double moved2 = 0.0, kinetic = 0.0, gravity_work = 0.0;
   {
     auto scope = report_.time("integration");
-    const Vec3 g = settings_.gravity;
     const std::vector<Vec3>& reference = neighbours_.reference_positions();
     const bool same_slots = reference.size() == n;
-#pragma omp parallel for schedule(static) reduction(max : moved2) if (n >= settings_.parallel_from)
+#pragma omp parallel for schedule(static) reduction(max : moved2) \
+    reduction(+ : kinetic, gravity_work) if (n >= settings_.parallel_from)
     for (std::size_t i = 0; i < n; ++i) {
+      if (finish_before) {
+        gravity_work += dt * p.mass[i] * g.dot(p.velocity[i]);  // at the half step
+        p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
+        p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
+        kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
+                   0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
+      }
       p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
       p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
       p.position[i] += dt * p.velocity[i];
@@ -363,6 +374,11 @@ void DemEngine::one_step() {
     for (auto& w : walls_) w.advance(dt);
     for (auto& m : meshes_) m.advance(dt);
   }
+  if (finish_before) {
+    kick_pending_ = false;
+    guard_.add_gravity_work(gravity_work);
+    guard_.check_state(particles_, kinetic, step_);
+  }
   time_ += dt;
   ++step_;
   {
@@ -373,7 +389,15 @@ void DemEngine::one_step() {
     rebuild_due_ = false;
   }
   compute_forces();
+  particle_steps_ += static_cast<double>(particles_.size());
+  if (last) finish_kick();
+  else kick_pending_ = true;
+}
+
+void DemEngine::finish_kick() {
+  const double dt = time_step_.value;
   const std::size_t m = particles_.size();
+  ParticleStore& p = particles_;
   double kinetic = 0.0, gravity_work = 0.0;
   {
     auto scope = report_.time("integration");
@@ -388,9 +412,9 @@ void DemEngine::one_step() {
                  0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
     }
   }
+  kick_pending_ = false;
   guard_.add_gravity_work(gravity_work);
   guard_.check_state(particles_, kinetic, step_);
-  particle_steps_ += static_cast<double>(m);
 }
 
 void DemEngine::run_steps(long steps) {
@@ -399,8 +423,10 @@ void DemEngine::run_steps(long steps) {
   ProgressLine progress = ProgressLine::for_terminal(
       "DEM", static_cast<double>(steps) * time_step_.value, "s", settings_.quiet);
   const double t0 = time_;
+  // Between two steps of this call the second half kick waits for the next step's first pass;
+  // the last step finishes its own, so the state is whole between calls.
   for (long s = 0; s < steps; ++s) {
-    one_step();
+    one_step(s + 1 == steps);
     auto scope = report_.time("output");
     progress.update(time_ - t0);
   }

@@ -125,7 +125,10 @@ class DemEngine {
   // comes from the stiffest current spring): warns once when it exceeds their stable step,
   // stops the run through the guard when it exceeds their stability limit.
   void check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls);
-  void one_step();
+  // One velocity Verlet step; unless `last`, its second half kick is left to the next step's
+  // first pass over the particles (kick_pending_).
+  void one_step(bool last);
+  void finish_kick();  // the pending second half kick, its kinetic energy and the guard check
   std::string make_plan() const;
   void restore_prepared_state();            // from pending_, in prepare()
   std::size_t wall_history_stride() const;  // wall-history doubles per particle
@@ -149,6 +152,7 @@ class DemEngine {
   std::unique_ptr<DemCheckpoint> pending_;  // a restored run's state until prepare()
   bool prepared_ = false;
   bool rebuild_due_ = false;  // particles inserted or removed since the last step
+  bool kick_pending_ = false;  // inside run_steps(): the last step's second half kick not done
   double time_ = 0.0;
   long step_ = 0;
   double particle_steps_ = 0.0;
