@@ -6,6 +6,7 @@
 // directly.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -32,7 +33,25 @@ class LawForces final : public ForceKernel {
 
   // flatten: the composed law's parts (and Eigen's small-vector helpers) are inlined into the
   // loop; left to the inliner's size limits they stayed out-of-line calls per contact.
-  [[gnu::flatten]] DeepestOverlap add_pair_forces(ForceContext& c) override {
+  DeepestOverlap add_pair_forces(ForceContext& c) override {
+    double unused = 0.0;
+    return contact_forces(c, nullptr, unused);
+  }
+
+  void add_contact_forces(ForceContext& c, DeepestOverlap& pairs, DeepestOverlap& walls,
+                          double& wall_seconds) override {
+    const bool any_wall = !c.walls.empty() || !c.meshes.empty();
+    walls = {};
+    wall_seconds = 0.0;
+    pairs = contact_forces(c, any_wall ? &walls : nullptr, wall_seconds);
+  }
+
+  // The pair loop, and with `walls` also the wall contacts: each thread runs those of its own
+  // rows once their pair forces and queued reactions are in (the order of the sums on each
+  // particle is that of the two loops run one after the other). `wall_seconds`: thread 0's
+  // time on its walls.
+  [[gnu::flatten]] DeepestOverlap contact_forces(ForceContext& c, DeepestOverlap* walls,
+                                                 double& wall_seconds) {
     ParticleStore& p = c.particles;
     const std::size_t n = p.size();
 #ifdef _OPENMP
@@ -188,16 +207,50 @@ class LawForces final : public ForceKernel {
             force[q.slot] += q.force;
             torque[q.slot] += q.torque;
           }
+      if (walls) {
+        const auto start = std::chrono::steady_clock::now();
+        own_[tid].wall_worst = wall_rows(c, begin, end);
+        if (tid == 0)
+          wall_seconds =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
     }
     DeepestOverlap result;
     for (const auto& o : own_)
       if (o.worst.ratio > result.ratio) result = o.worst;
+    if (walls)
+      for (const auto& o : own_)
+        if (o.wall_worst.ratio > walls->ratio ||
+            (o.wall_worst.ratio == walls->ratio && o.wall_worst.slot < walls->slot))
+          *walls = o.wall_worst;
     return result;
   }
 
   [[gnu::flatten]] DeepestOverlap add_wall_forces(ForceContext& c) override {
+    DeepestOverlap result;
+    if (c.walls.empty() && c.meshes.empty()) return result;
+    const std::size_t n = c.particles.size();
+#pragma omp parallel if (c.parallel)
+    {
+#ifdef _OPENMP
+      const auto nt = static_cast<std::size_t>(omp_get_num_threads());
+      const auto tid = static_cast<std::size_t>(omp_get_thread_num());
+#else
+      const std::size_t nt = 1, tid = 0;
+#endif
+      const DeepestOverlap worst = wall_rows(c, n * tid / nt, n * (tid + 1) / nt);
+#pragma omp critical
+      if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
+        result = worst;
+    }
+    return result;
+  }
+
+ private:
+  // The particle-wall contacts of the particles in slots [begin, end), each touching only its
+  // own particle (so a thread may run its own rows while another runs its own).
+  DeepestOverlap wall_rows(ForceContext& c, std::size_t begin, std::size_t end) {
     ParticleStore& p = c.particles;
-    const std::size_t n = p.size();
     const std::size_t walls = c.walls.size();
     const std::size_t meshes = c.meshes.size();
     // Per particle: walls x history, then per mesh kMaxContacts slots of (normal, history);
@@ -205,81 +258,74 @@ class LawForces final : public ForceKernel {
     constexpr std::size_t kSlot = 3 + kHistory;
     constexpr int kSlots = MeshWall::kMaxContacts;
     const std::size_t stride = walls * kHistory + meshes * kSlots * kSlot;
-    DeepestOverlap result;
-    if (walls == 0 && meshes == 0) return result;
     double* history = p.wall_history.data();
-#pragma omp parallel if (c.parallel)
-    {
-      DeepestOverlap worst;
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 xi = p.position[i];
-        const double ri = p.radius[i];
-        for (std::size_t k = 0; k < walls; ++k) {
-          const Wall& wall = c.walls[k];
-          double* h = history + i * stride + k * kHistory;
-          const WallTouch touch = wall.touch(xi);
-          const double overlap = ri - touch.gap;
-          if (!(overlap > 0.0) || !wall.active(c.time)) {
-            clear(h);
-            continue;
+    DeepestOverlap worst;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec3 xi = p.position[i];
+      const double ri = p.radius[i];
+      for (std::size_t k = 0; k < walls; ++k) {
+        const Wall& wall = c.walls[k];
+        double* h = history + i * stride + k * kHistory;
+        const WallTouch touch = wall.touch(xi);
+        const double overlap = ri - touch.gap;
+        if (!(overlap > 0.0) || !wall.active(c.time)) {
+          clear(h);
+          continue;
+        }
+        const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
+        const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
+                                                wall.angular_velocity(), c.dt, h);
+        if (ratio > worst.ratio) worst = {ratio, i, true};
+      }
+      for (std::size_t m = 0; m < meshes; ++m) {
+        const MeshWall& mesh = c.meshes[m];
+        double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
+        std::array<MeshTouch, kSlots> touch;
+        const int count = mesh.active(c.time) ? mesh.touches(xi, ri, touch) : 0;
+        // Each contact takes the slot whose stored normal is closest to its own (a contact
+        // sliding onto the next triangle keeps its history); the others start from zero.
+        std::array<int, kSlots> slot_of;
+        std::array<bool, kSlots> taken{};
+        for (int q = 0; q < count; ++q) {
+          slot_of[q] = -1;
+          double best = 0.8;  // within about 37 degrees
+          for (int s = 0; s < kSlots; ++s) {
+            if (taken[s]) continue;
+            const double* sn = slots + s * kSlot;
+            const double d = touch[q].normal.dot(Vec3(sn[0], sn[1], sn[2]));
+            if (d > best) {
+              best = d;
+              slot_of[q] = s;
+            }
           }
-          const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
-          const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
-                                                  wall.angular_velocity(), c.dt, h);
+          if (slot_of[q] >= 0) taken[slot_of[q]] = true;
+        }
+        for (int s = 0; s < kSlots; ++s)
+          if (!taken[s]) clear_slot(slots + s * kSlot);
+        for (int q = 0; q < count; ++q) {
+          if (slot_of[q] < 0)
+            for (int s = 0; s < kSlots; ++s)
+              if (!taken[s]) {
+                taken[s] = true;
+                slot_of[q] = s;
+                break;
+              }
+          double* slot = slots + slot_of[q] * kSlot;
+          slot[0] = touch[q].normal.x();
+          slot[1] = touch[q].normal.y();
+          slot[2] = touch[q].normal.z();
+          const double ratio =
+              apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
+                                 mesh.surface_velocity(touch[q].point),
+                                 mesh.angular_velocity(), c.dt, slot + 3);
           if (ratio > worst.ratio) worst = {ratio, i, true};
         }
-        for (std::size_t m = 0; m < meshes; ++m) {
-          const MeshWall& mesh = c.meshes[m];
-          double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
-          std::array<MeshTouch, kSlots> touch;
-          const int count = mesh.active(c.time) ? mesh.touches(xi, ri, touch) : 0;
-          // Each contact takes the slot whose stored normal is closest to its own (a contact
-          // sliding onto the next triangle keeps its history); the others start from zero.
-          std::array<int, kSlots> slot_of;
-          std::array<bool, kSlots> taken{};
-          for (int q = 0; q < count; ++q) {
-            slot_of[q] = -1;
-            double best = 0.8;  // within about 37 degrees
-            for (int s = 0; s < kSlots; ++s) {
-              if (taken[s]) continue;
-              const double* sn = slots + s * kSlot;
-              const double d = touch[q].normal.dot(Vec3(sn[0], sn[1], sn[2]));
-              if (d > best) {
-                best = d;
-                slot_of[q] = s;
-              }
-            }
-            if (slot_of[q] >= 0) taken[slot_of[q]] = true;
-          }
-          for (int s = 0; s < kSlots; ++s)
-            if (!taken[s]) clear_slot(slots + s * kSlot);
-          for (int q = 0; q < count; ++q) {
-            if (slot_of[q] < 0)
-              for (int s = 0; s < kSlots; ++s)
-                if (!taken[s]) {
-                  taken[s] = true;
-                  slot_of[q] = s;
-                  break;
-                }
-            double* slot = slots + slot_of[q] * kSlot;
-            slot[0] = touch[q].normal.x();
-            slot[1] = touch[q].normal.y();
-            slot[2] = touch[q].normal.z();
-            const double ratio =
-                apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
-                                   mesh.surface_velocity(touch[q].point),
-                                   mesh.angular_velocity(), c.dt, slot + 3);
-            if (ratio > worst.ratio) worst = {ratio, i, true};
-          }
-        }
       }
-#pragma omp critical
-      if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
-        result = worst;
     }
-    return result;
+    return worst;
   }
+
+ public:
 
  private:
   // A touching pair found by the first pass of the pair loop, with what the law needs.
@@ -370,6 +416,7 @@ class LawForces final : public ForceKernel {
   struct alignas(64) ThreadShare {
     std::vector<Reaction> queue;
     DeepestOverlap worst;
+    DeepestOverlap wall_worst;
   };
   std::vector<ThreadShare> own_;
   UniformBodies uniform_;
