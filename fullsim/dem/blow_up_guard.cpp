@@ -15,14 +15,28 @@ void BlowUpGuard::start(double kinetic_energy, double floor, double wall_speed) 
 }
 
 void BlowUpGuard::fail(const std::string& what, const ParticleStore& p, std::size_t slot,
-                       long step) const {
-  char buf[400];
+                       long step, double safe_dt) const {
+  char buf[600];
   const Vec3& x = p.position[slot];
   std::snprintf(buf, sizeof buf,
                 "DEM blow-up at step %ld: %s; particle id %u at (%.6g, %.6g, %.6g) m. "
                 "A safe time step is %.4g s (or below).",
-                step, what.c_str(), p.id[slot], x.x(), x.y(), x.z(), safe_dt_);
+                step, what.c_str(), p.id[slot], x.x(), x.y(), x.z(),
+                safe_dt > 0.0 ? safe_dt : safe_dt_);
   throw NumericalFailure(buf);
+}
+
+void BlowUpGuard::check_spring(double dt, double period, const std::string& spring,
+                               double safe_dt, const ParticleStore& p, std::size_t slot,
+                               long step) const {
+  constexpr double kPi = 3.14159265358979323846;
+  if (!(period > 0.0) || dt * kPi <= period) return;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "time step %.4g s beyond the stability limit %.4g s (period / pi) of the "
+                "stiffest current spring, %s",
+                dt, period / kPi, spring.c_str());
+  fail(buf, p, slot, step, safe_dt);
 }
 
 void BlowUpGuard::check_overlap(const DeepestOverlap& deepest, const ParticleStore& p,

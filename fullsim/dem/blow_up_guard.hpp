@@ -40,6 +40,11 @@ class BlowUpGuard {
 
   void check_overlap(const DeepestOverlap& deepest, const ParticleStore& p, long step) const;
   void check_state(const ParticleStore& p, double kinetic_energy, long step) const;
+  // The step `dt` against the stiffest current spring (`period`, described by `spring`):
+  // beyond period / pi (omega dt > 2) velocity Verlet cannot hold that contact, so the run
+  // stops naming the contact's particle (`slot`) and the stable step for it, `safe_dt`.
+  void check_spring(double dt, double period, const std::string& spring, double safe_dt,
+                    const ParticleStore& p, std::size_t slot, long step) const;
 
   // The energy book (checkpoints): initial kinetic energy, floor, gravity work so far [J].
   double initial_energy() const { return initial_energy_; }
@@ -56,7 +61,7 @@ class BlowUpGuard {
 
  private:
   [[noreturn]] void fail(const std::string& what, const ParticleStore& p, std::size_t slot,
-                         long step) const;
+                         long step, double safe_dt = 0.0) const;
   BlowUpLimits limits_;
   double safe_dt_ = 0.0;
   double wall_speed_ = 0.0;

@@ -21,7 +21,7 @@ namespace feedflow {
 namespace {
 
 std::string format(const char* fmt, auto... args) {
-  char buf[400];
+  char buf[700];
   std::snprintf(buf, sizeof buf, fmt, args...);
   return buf;
 }
@@ -212,6 +212,7 @@ void DemEngine::prepare(std::ostream& out) {
   time_step_ = choose_time_step(stable, settings_.requested_time_step, settings_.force_time_step);
 
   guard_ = BlowUpGuard(settings_.guard, stable.value);
+  checked_ratio_ = settings_.time_step.design_overlap;  // the design springs hold up to here
 
   const double v_design = settings_.time_step.max_velocity;
   const double mass = particles_.total_mass();
@@ -274,6 +275,10 @@ std::string DemEngine::make_plan() const {
               thread_count(),
               particles_.size() >= settings_.parallel_from ? "" : "; this small system runs on one");
   s << "  " << guard_.describe() << '\n';
+  s << format("  live step check: the springs of the deepest contact are re-taken whenever it "
+              "passes %.3g R (then each 5 %% deeper); a warning above their stable step, a stop "
+              "above period / pi\n",
+              settings_.time_step.design_overlap);
   return s.str();
 }
 
@@ -297,31 +302,68 @@ void DemEngine::compute_forces() {
   ForceContext c{particles_, neighbours_, box_,   walls_, meshes_,
                  time_,      time_step_.value, n >= settings_.parallel_from};
   DeepestOverlap pairs, walls;
-  {
-    auto scope = report_.time("pairs");
-    pairs = kernel_->add_pair_forces(c);
-  }
-  {
-    auto scope = report_.time("walls");
-    walls = kernel_->add_wall_forces(c);
-  }
+  // One parallel region for the pair and wall loops; the walls phase is the time one thread
+  // spent on its share of the wall contacts, the pairs phase the rest.
+  const auto start = std::chrono::steady_clock::now();
+  double wall_seconds = 0.0;
+  kernel_->add_contact_forces(c, pairs, walls, wall_seconds);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report_.add_phase_time("pairs", seconds - wall_seconds);
+  report_.add_phase_time("walls", wall_seconds);
   guard_.check_overlap(pairs.ratio >= walls.ratio ? pairs : walls, particles_, step_);
+  check_current_springs(pairs, walls);
 }
 
-void DemEngine::one_step() {
+void DemEngine::check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls) {
+  // Every law's springs stiffen with the overlap, and the design springs of prepare() hold up
+  // to the design overlap; the springs are looked at again only when the deepest contact is
+  // 5 % deeper than the deepest looked at so far (a few times in a run, not every step).
+  const double deepest = std::max(pairs.ratio, walls.ratio);
+  if (!(deepest > 1.05 * checked_ratio_)) return;
+  checked_ratio_ = deepest;
+  const StiffestSpring now =
+      current_springs(settings_.material, effective_law_, pairs.ratio, walls.ratio);
+  if (now.empty()) return;
+  const StableTimeStep live = stable_time_step(settings_.material, now, settings_.time_step);
+  const DeepestOverlap& at = pairs.ratio >= walls.ratio ? pairs : walls;
+  guard_.check_spring(time_step_.value, now.period(), now.description(), live.value, particles_,
+                      at.slot, step_);
+  if (spring_warning_.empty() && time_step_.value > live.value) {
+    spring_warning_ = format("warning: at step %ld the deepest contacts (P-P %.3g R, P-W %.3g R) "
+                             "are stiffer than the time step allows: %.4g s exceeds their stable "
+                             "step %.4g s (%s); the run goes on, watched by the blow-up guard",
+                             step_, pairs.ratio, walls.ratio, time_step_.value, live.value,
+                             now.description().c_str());
+    std::cerr << spring_warning_ << '\n';
+  }
+}
+
+void DemEngine::one_step(bool last) {
   const double dt = time_step_.value;
   const std::size_t n = particles_.size();
   ParticleStore& p = particles_;
-  // First half kick and drift; the forces are then reset to the weight, and the largest
-  // displacement since the last rebuild is taken on the way (no separate pass).
-  double moved2 = 0.0;
+  const Vec3 g = settings_.gravity;
+  // The second half kick of the step before (when it was left pending) and the first half
+  // kick and drift of this one, in one pass over the particles; the forces are then reset to
+  // the weight, and the largest displacement since the last rebuild is taken on the way.
+  // Per particle the operations and their order are those of two separate passes.
+  const bool finish_before = kick_pending_;
+  double moved2 = 0.0, kinetic = 0.0, gravity_work = 0.0;
   {
     auto scope = report_.time("integration");
-    const Vec3 g = settings_.gravity;
     const std::vector<Vec3>& reference = neighbours_.reference_positions();
     const bool same_slots = reference.size() == n;
-#pragma omp parallel for schedule(static) reduction(max : moved2) if (n >= settings_.parallel_from)
+#pragma omp parallel for schedule(static) reduction(max : moved2) \
+    reduction(+ : kinetic, gravity_work) if (n >= settings_.parallel_from)
     for (std::size_t i = 0; i < n; ++i) {
+      if (finish_before) {
+        gravity_work += dt * p.mass[i] * g.dot(p.velocity[i]);  // at the half step
+        p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
+        p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
+        kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
+                   0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
+      }
       p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
       p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
       p.position[i] += dt * p.velocity[i];
@@ -333,6 +375,11 @@ void DemEngine::one_step() {
     for (auto& w : walls_) w.advance(dt);
     for (auto& m : meshes_) m.advance(dt);
   }
+  if (finish_before) {
+    kick_pending_ = false;
+    guard_.add_gravity_work(gravity_work);
+    guard_.check_state(particles_, kinetic, step_);
+  }
   time_ += dt;
   ++step_;
   {
@@ -343,7 +390,15 @@ void DemEngine::one_step() {
     rebuild_due_ = false;
   }
   compute_forces();
+  particle_steps_ += static_cast<double>(particles_.size());
+  if (last) finish_kick();
+  else kick_pending_ = true;
+}
+
+void DemEngine::finish_kick() {
+  const double dt = time_step_.value;
   const std::size_t m = particles_.size();
+  ParticleStore& p = particles_;
   double kinetic = 0.0, gravity_work = 0.0;
   {
     auto scope = report_.time("integration");
@@ -358,9 +413,9 @@ void DemEngine::one_step() {
                  0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
     }
   }
+  kick_pending_ = false;
   guard_.add_gravity_work(gravity_work);
   guard_.check_state(particles_, kinetic, step_);
-  particle_steps_ += static_cast<double>(m);
 }
 
 void DemEngine::run_steps(long steps) {
@@ -369,8 +424,10 @@ void DemEngine::run_steps(long steps) {
   ProgressLine progress = ProgressLine::for_terminal(
       "DEM", static_cast<double>(steps) * time_step_.value, "s", settings_.quiet);
   const double t0 = time_;
+  // Between two steps of this call the second half kick waits for the next step's first pass;
+  // the last step finishes its own, so the state is whole between calls.
   for (long s = 0; s < steps; ++s) {
-    one_step();
+    one_step(s + 1 == steps);
     auto scope = report_.time("output");
     progress.update(time_ - t0);
   }

@@ -111,6 +111,9 @@ class DemEngine {
   const RunReport& report() const { return report_; }
   double kinetic_energy() const { return particles_.kinetic_energy(); }
   double max_speed() const;
+  // The warning given (once, also on stderr) when a contact grew stiffer than the time step
+  // allows with its safety factor; empty if none.
+  const std::string& spring_warning() const { return spring_warning_; }
   // The particle-steps run so far.
   double particle_steps() const { return particle_steps_; }
 
@@ -118,7 +121,14 @@ class DemEngine {
   void rebuild_neighbours();
   void reset_forces();    // to the weight, no torque
   void compute_forces();  // adds the contact forces
-  void one_step();
+  // The time step against the springs of the deepest current contacts (issue 5: the step
+  // comes from the stiffest current spring): warns once when it exceeds their stable step,
+  // stops the run through the guard when it exceeds their stability limit.
+  void check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls);
+  // One velocity Verlet step; unless `last`, its second half kick is left to the next step's
+  // first pass over the particles (kick_pending_).
+  void one_step(bool last);
+  void finish_kick();  // the pending second half kick, its kinetic energy and the guard check
   std::string make_plan() const;
   void restore_prepared_state();            // from pending_, in prepare()
   std::size_t wall_history_stride() const;  // wall-history doubles per particle
@@ -142,10 +152,13 @@ class DemEngine {
   std::unique_ptr<DemCheckpoint> pending_;  // a restored run's state until prepare()
   bool prepared_ = false;
   bool rebuild_due_ = false;  // particles inserted or removed since the last step
+  bool kick_pending_ = false;  // inside run_steps(): the last step's second half kick not done
   double time_ = 0.0;
   long step_ = 0;
   double particle_steps_ = 0.0;
   double run_seconds_ = 0.0;
+  double checked_ratio_ = 0.0;  // overlap / radius whose springs were checked last
+  std::string spring_warning_;
 };
 
 }  // namespace feedflow

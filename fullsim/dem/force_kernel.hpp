@@ -46,6 +46,10 @@ class ForceKernel {
   virtual DeepestOverlap add_pair_forces(ForceContext& c) = 0;
   // Adds the particle-wall forces and torques (P-W parameter set).
   virtual DeepestOverlap add_wall_forces(ForceContext& c) = 0;
+  // Both of the above in one parallel region (one thread start per step instead of two), with
+  // the same sums; `wall_seconds` is the time one thread spent on its wall contacts [s].
+  virtual void add_contact_forces(ForceContext& c, DeepestOverlap& pairs, DeepestOverlap& walls,
+                                  double& wall_seconds) = 0;
 };
 
 std::unique_ptr<ForceKernel> make_force_kernel(const ContactLawChoice& choice,

@@ -6,6 +6,7 @@
 // directly.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -32,7 +33,25 @@ class LawForces final : public ForceKernel {
 
   // flatten: the composed law's parts (and Eigen's small-vector helpers) are inlined into the
   // loop; left to the inliner's size limits they stayed out-of-line calls per contact.
-  [[gnu::flatten]] DeepestOverlap add_pair_forces(ForceContext& c) override {
+  DeepestOverlap add_pair_forces(ForceContext& c) override {
+    double unused = 0.0;
+    return contact_forces(c, nullptr, unused);
+  }
+
+  void add_contact_forces(ForceContext& c, DeepestOverlap& pairs, DeepestOverlap& walls,
+                          double& wall_seconds) override {
+    const bool any_wall = !c.walls.empty() || !c.meshes.empty();
+    walls = {};
+    wall_seconds = 0.0;
+    pairs = contact_forces(c, any_wall ? &walls : nullptr, wall_seconds);
+  }
+
+  // The pair loop, and with `walls` also the wall contacts: each thread runs those of its own
+  // rows once their pair forces and queued reactions are in (the order of the sums on each
+  // particle is that of the two loops run one after the other). `wall_seconds`: thread 0's
+  // time on its walls.
+  [[gnu::flatten]] DeepestOverlap contact_forces(ForceContext& c, DeepestOverlap* walls,
+                                                 double& wall_seconds) {
     ParticleStore& p = c.particles;
     const std::size_t n = p.size();
 #ifdef _OPENMP
@@ -75,6 +94,10 @@ class LawForces final : public ForceKernel {
     double* history = c.neighbours.history.data();
     const SimulationBox box = c.box;
     const double dt = c.dt;
+    // A bed of equal spheres (one species) has the same R*, m* and I* for every pair: taken once
+    // here by the very same expressions, so the results stay bit for bit those of the general
+    // loop, without three divisions per contact.
+    const UniformBodies uniform = uniform_bodies(p, c.neighbours.rebuild_count());
 
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
@@ -87,55 +110,94 @@ class LawForces final : public ForceKernel {
       std::vector<Reaction>& queue = own_[tid].queue;
       queue.clear();
       DeepestOverlap worst;
+      // Two passes over batches of entries: the first finds the touching pairs and their
+      // kinematics (short, independent iterations the core overlaps, hiding the latency of
+      // the square root and division of each), the second runs the law on them in the same
+      // order. Row i's own force and torque are summed in a local and added when its row is
+      // done, as a single pass would, so the sums are the same bit for bit.
+      std::array<Touching, kBatch> batch;
+      std::size_t row = begin;  // the row whose force is being summed
+      Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
+      auto run_batch = [&](std::size_t count) {
+        for (std::size_t k = 0; k < count; ++k) {
+          Touching& b = batch[k];
+          if (b.i != row) {
+            force[row] += fi;
+            torque[row] += ti;
+            fi.setZero();
+            ti.setZero();
+            row = b.i;
+          }
+          double* h = history + static_cast<std::size_t>(b.entry) * kHistory;
+          History hist;
+          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
+          const ContactOutput out = particle_particle_.evaluate(b.in, hist);
+          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
+          const Vec3 f = out.normal_force * b.in.normal + out.tangential_force;
+          const Vec3 lever = b.in.normal.cross(out.tangential_force);
+          fi += f;
+          ti += out.rolling_torque - b.ci * lever;
+          const Vec3 tj = -(out.rolling_torque + b.cj * lever);
+          const std::size_t j = b.j;
+          if (j >= begin && j < end) {
+            force[j] -= f;
+            torque[j] += tj;
+          } else {
+            queue.push_back({b.j, -f, tj});
+          }
+          const double smaller = std::min(rad[b.i], rad[j]);
+          if (b.in.overlap > worst.ratio * smaller) worst = {b.in.overlap / smaller, b.i, false};
+        }
+      };
+      std::size_t count = 0;
       for (std::size_t i = begin; i < end; ++i) {
         const Vec3 xi = x[i];
         const double ri = rad[i];
-        Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
         for (std::uint32_t e = first[i]; e < first[i + 1]; ++e) {
           const std::size_t j = partner[e];
-          double* h = history + static_cast<std::size_t>(e) * kHistory;
           const Vec3 d = box.minimum_image(xi - x[j]);
           const double rj = rad[j];
           const double reach = ri + rj;
           const double r2 = d.squaredNorm();
           if (r2 >= reach * reach) {
-            clear(h);
+            clear(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
           const double r = std::sqrt(r2);
-          ContactInput in;
+          Touching& b = batch[count];
+          b.i = static_cast<std::uint32_t>(i);
+          b.j = static_cast<std::uint32_t>(j);
+          b.entry = e;
+          ContactInput& in = b.in;
           in.overlap = reach - r;
           in.normal = d * (1.0 / r);
-          const double ci = ri - 0.5 * in.overlap, cj = rj - 0.5 * in.overlap;
+          b.ci = ri - 0.5 * in.overlap;
+          b.cj = rj - 0.5 * in.overlap;
           const Vec3 vr = v[i] - v[j];
           in.normal_velocity = vr.dot(in.normal);
           in.tangential_velocity =
-              vr - in.normal_velocity * in.normal + in.normal.cross(ci * w[i] + cj * w[j]);
+              vr - in.normal_velocity * in.normal + in.normal.cross(b.ci * w[i] + b.cj * w[j]);
           in.relative_angular_velocity = w[i] - w[j];
-          in.effective_radius = ri * rj / reach;
-          in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
-          in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
-          in.dt = dt;
-          History hist;
-          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-          const ContactOutput out = particle_particle_.evaluate(in, hist);
-          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
-          const Vec3 f = out.normal_force * in.normal + out.tangential_force;
-          const Vec3 lever = in.normal.cross(out.tangential_force);
-          fi += f;
-          ti += out.rolling_torque - ci * lever;
-          const Vec3 tj = -(out.rolling_torque + cj * lever);
-          if (j >= begin && j < end) {
-            force[j] -= f;
-            torque[j] += tj;
+          if (uniform.yes) {
+            in.effective_radius = uniform.radius;
+            in.effective_mass = uniform.mass;
+            in.effective_inertia = uniform.inertia;
           } else {
-            queue.push_back({static_cast<std::uint32_t>(j), -f, tj});
+            in.effective_radius = ri * rj / reach;
+            in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
+            in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
           }
-          const double smaller = std::min(ri, rj);
-          if (in.overlap > worst.ratio * smaller) worst = {in.overlap / smaller, i, false};
+          in.dt = dt;
+          if (++count == kBatch) {
+            run_batch(count);
+            count = 0;
+          }
         }
-        force[i] += fi;
-        torque[i] += ti;
+      }
+      run_batch(count);
+      if (begin < end) {
+        force[row] += fi;
+        torque[row] += ti;
       }
       own_[tid].worst = worst;
 #pragma omp barrier
@@ -145,92 +207,38 @@ class LawForces final : public ForceKernel {
             force[q.slot] += q.force;
             torque[q.slot] += q.torque;
           }
+      if (walls) {
+        const auto start = std::chrono::steady_clock::now();
+        own_[tid].wall_worst = wall_rows(c, begin, end);
+        if (tid == 0)
+          wall_seconds =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
     }
     DeepestOverlap result;
     for (const auto& o : own_)
       if (o.worst.ratio > result.ratio) result = o.worst;
+    if (walls)
+      for (const auto& o : own_)
+        if (o.wall_worst.ratio > walls->ratio ||
+            (o.wall_worst.ratio == walls->ratio && o.wall_worst.slot < walls->slot))
+          *walls = o.wall_worst;
     return result;
   }
 
   [[gnu::flatten]] DeepestOverlap add_wall_forces(ForceContext& c) override {
-    ParticleStore& p = c.particles;
-    const std::size_t n = p.size();
-    const std::size_t walls = c.walls.size();
-    const std::size_t meshes = c.meshes.size();
-    // Per particle: walls x history, then per mesh kMaxContacts slots of (normal, history);
-    // a slot's normal (zero when free) matches it to the same contact at the next step.
-    constexpr std::size_t kSlot = 3 + kHistory;
-    constexpr int kSlots = MeshWall::kMaxContacts;
-    const std::size_t stride = walls * kHistory + meshes * kSlots * kSlot;
     DeepestOverlap result;
-    if (walls == 0 && meshes == 0) return result;
-    double* history = p.wall_history.data();
+    if (c.walls.empty() && c.meshes.empty()) return result;
+    const std::size_t n = c.particles.size();
 #pragma omp parallel if (c.parallel)
     {
-      DeepestOverlap worst;
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 xi = p.position[i];
-        const double ri = p.radius[i];
-        for (std::size_t k = 0; k < walls; ++k) {
-          const Wall& wall = c.walls[k];
-          double* h = history + i * stride + k * kHistory;
-          const WallTouch touch = wall.touch(xi);
-          const double overlap = ri - touch.gap;
-          if (!(overlap > 0.0) || !wall.active(c.time)) {
-            clear(h);
-            continue;
-          }
-          const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
-          const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
-                                                  wall.angular_velocity(), c.dt, h);
-          if (ratio > worst.ratio) worst = {ratio, i, true};
-        }
-        for (std::size_t m = 0; m < meshes; ++m) {
-          const MeshWall& mesh = c.meshes[m];
-          double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
-          std::array<MeshTouch, kSlots> touch;
-          const int count = mesh.active(c.time) ? mesh.touches(xi, ri, touch) : 0;
-          // Each contact takes the slot whose stored normal is closest to its own (a contact
-          // sliding onto the next triangle keeps its history); the others start from zero.
-          std::array<int, kSlots> slot_of;
-          std::array<bool, kSlots> taken{};
-          for (int q = 0; q < count; ++q) {
-            slot_of[q] = -1;
-            double best = 0.8;  // within about 37 degrees
-            for (int s = 0; s < kSlots; ++s) {
-              if (taken[s]) continue;
-              const double* sn = slots + s * kSlot;
-              const double d = touch[q].normal.dot(Vec3(sn[0], sn[1], sn[2]));
-              if (d > best) {
-                best = d;
-                slot_of[q] = s;
-              }
-            }
-            if (slot_of[q] >= 0) taken[slot_of[q]] = true;
-          }
-          for (int s = 0; s < kSlots; ++s)
-            if (!taken[s]) clear_slot(slots + s * kSlot);
-          for (int q = 0; q < count; ++q) {
-            if (slot_of[q] < 0)
-              for (int s = 0; s < kSlots; ++s)
-                if (!taken[s]) {
-                  taken[s] = true;
-                  slot_of[q] = s;
-                  break;
-                }
-            double* slot = slots + slot_of[q] * kSlot;
-            slot[0] = touch[q].normal.x();
-            slot[1] = touch[q].normal.y();
-            slot[2] = touch[q].normal.z();
-            const double ratio =
-                apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
-                                   mesh.surface_velocity(touch[q].point),
-                                   mesh.angular_velocity(), c.dt, slot + 3);
-            if (ratio > worst.ratio) worst = {ratio, i, true};
-          }
-        }
-      }
+#ifdef _OPENMP
+      const auto nt = static_cast<std::size_t>(omp_get_num_threads());
+      const auto tid = static_cast<std::size_t>(omp_get_thread_num());
+#else
+      const std::size_t nt = 1, tid = 0;
+#endif
+      const DeepestOverlap worst = wall_rows(c, n * tid / nt, n * (tid + 1) / nt);
 #pragma omp critical
       if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
         result = worst;
@@ -239,6 +247,114 @@ class LawForces final : public ForceKernel {
   }
 
  private:
+  // The particle-wall contacts of the particles in slots [begin, end), each touching only its
+  // own particle (so a thread may run its own rows while another runs its own).
+  DeepestOverlap wall_rows(ForceContext& c, std::size_t begin, std::size_t end) {
+    ParticleStore& p = c.particles;
+    const std::size_t walls = c.walls.size();
+    const std::size_t meshes = c.meshes.size();
+    // Per particle: walls x history, then per mesh kMaxContacts slots of (normal, history);
+    // a slot's normal (zero when free) matches it to the same contact at the next step.
+    constexpr std::size_t kSlot = 3 + kHistory;
+    constexpr int kSlots = MeshWall::kMaxContacts;
+    const std::size_t stride = walls * kHistory + meshes * kSlots * kSlot;
+    double* history = p.wall_history.data();
+    DeepestOverlap worst;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Vec3 xi = p.position[i];
+      const double ri = p.radius[i];
+      for (std::size_t k = 0; k < walls; ++k) {
+        const Wall& wall = c.walls[k];
+        double* h = history + i * stride + k * kHistory;
+        const WallTouch touch = wall.touch(xi);
+        const double overlap = ri - touch.gap;
+        if (!(overlap > 0.0) || !wall.active(c.time)) {
+          clear(h);
+          continue;
+        }
+        const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
+        const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
+                                                wall.angular_velocity(), c.dt, h);
+        if (ratio > worst.ratio) worst = {ratio, i, true};
+      }
+      for (std::size_t m = 0; m < meshes; ++m) {
+        const MeshWall& mesh = c.meshes[m];
+        double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
+        std::array<MeshTouch, kSlots> touch;
+        const int count = mesh.active(c.time) ? mesh.touches(xi, ri, touch) : 0;
+        // Each contact takes the slot whose stored normal is closest to its own (a contact
+        // sliding onto the next triangle keeps its history); the others start from zero.
+        std::array<int, kSlots> slot_of;
+        std::array<bool, kSlots> taken{};
+        for (int q = 0; q < count; ++q) {
+          slot_of[q] = -1;
+          double best = 0.8;  // within about 37 degrees
+          for (int s = 0; s < kSlots; ++s) {
+            if (taken[s]) continue;
+            const double* sn = slots + s * kSlot;
+            const double d = touch[q].normal.dot(Vec3(sn[0], sn[1], sn[2]));
+            if (d > best) {
+              best = d;
+              slot_of[q] = s;
+            }
+          }
+          if (slot_of[q] >= 0) taken[slot_of[q]] = true;
+        }
+        for (int s = 0; s < kSlots; ++s)
+          if (!taken[s]) clear_slot(slots + s * kSlot);
+        for (int q = 0; q < count; ++q) {
+          if (slot_of[q] < 0)
+            for (int s = 0; s < kSlots; ++s)
+              if (!taken[s]) {
+                taken[s] = true;
+                slot_of[q] = s;
+                break;
+              }
+          double* slot = slots + slot_of[q] * kSlot;
+          slot[0] = touch[q].normal.x();
+          slot[1] = touch[q].normal.y();
+          slot[2] = touch[q].normal.z();
+          const double ratio =
+              apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
+                                 mesh.surface_velocity(touch[q].point),
+                                 mesh.angular_velocity(), c.dt, slot + 3);
+          if (ratio > worst.ratio) worst = {ratio, i, true};
+        }
+      }
+    }
+    return worst;
+  }
+
+ public:
+
+ private:
+  // A touching pair found by the first pass of the pair loop, with what the law needs.
+  struct Touching {
+    ContactInput in;
+    double ci = 0.0, cj = 0.0;  // distances from the centres to the contact point [m]
+    std::uint32_t i = 0, j = 0, entry = 0;
+  };
+  static constexpr std::size_t kBatch = 32;
+  struct UniformBodies {
+    bool yes = false;
+    double radius = 0.0, mass = 0.0, inertia = 0.0;  // R*, m*, I* of every pair
+  };
+  // Whether all particles share radius, mass and inertia, and then the pair constants. Looked
+  // at again only after a rebuild (insertion, removal and re-sorting all rebuild the list).
+  UniformBodies uniform_bodies(const ParticleStore& p, std::size_t rebuild) {
+    if (uniform_rebuild_ == rebuild && uniform_count_ == p.size()) return uniform_;
+    uniform_rebuild_ = rebuild;
+    uniform_count_ = p.size();
+    uniform_ = {};
+    if (p.size() == 0) return uniform_;
+    const double r = p.radius[0], m = p.mass[0], in = p.inertia[0];
+    for (std::size_t k = 1; k < p.size(); ++k)
+      if (p.radius[k] != r || p.mass[k] != m || p.inertia[k] != in) return uniform_;
+    const double reach = r + r;
+    uniform_ = {true, r * r / reach, m * m / (m + m), in * in / (in + in)};
+    return uniform_;
+  }
+
   // One particle-wall contact with the P-W set: adds its force and torque to particle i and
   // returns the overlap over the radius.
   double apply_wall_contact(ParticleStore& p, std::size_t i, double gap, const Vec3& normal,
@@ -300,8 +416,12 @@ class LawForces final : public ForceKernel {
   struct alignas(64) ThreadShare {
     std::vector<Reaction> queue;
     DeepestOverlap worst;
+    DeepestOverlap wall_worst;
   };
   std::vector<ThreadShare> own_;
+  UniformBodies uniform_;
+  std::size_t uniform_rebuild_ = static_cast<std::size_t>(-1);
+  std::size_t uniform_count_ = 0;
 };
 
 }  // namespace feedflow

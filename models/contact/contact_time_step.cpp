@@ -75,27 +75,43 @@ void StiffestSpring::add(const ContactStiffness& k, double effective_mass,
              format("%s rolling spring %.3g N m/rad", w.c_str(), k.rolling) + at);
 }
 
-StiffestSpring design_springs(const DemParameters& dem, const ContactLawChoice& particle_particle,
-                              const ContactLawChoice& particle_wall, double design_overlap) {
+namespace {
+
+StiffestSpring springs_at(const DemParameters& dem, const ContactLawChoice& particle_particle,
+                          const ContactLawChoice& particle_wall, double pp_ratio,
+                          double pw_ratio) {
   const double r = dem.particle.radius;
   const double m = sphere_mass(dem.particle);
   const double inertia = 0.4 * m * r * r;
-  const double overlap = design_overlap * r;
   StiffestSpring springs;
   ContactInput pp;
   pp.effective_radius = r / 2;
   pp.effective_mass = m / 2;
   pp.effective_inertia = inertia / 2;
   pp.dt = 1e-6;
-  springs.add(loaded_springs(particle_particle, dem.particle_particle, pp, overlap), m / 2,
-              inertia / 2, overlap, "P-P");
+  if (pp_ratio > 0.0)
+    springs.add(loaded_springs(particle_particle, dem.particle_particle, pp, pp_ratio * r), m / 2,
+                inertia / 2, pp_ratio * r, "P-P");
   ContactInput pw = pp;
   pw.effective_radius = r;
   pw.effective_mass = m;
   pw.effective_inertia = inertia;
-  springs.add(loaded_springs(particle_wall, dem.particle_wall, pw, overlap), m, inertia, overlap,
-              "P-W");
+  if (pw_ratio > 0.0)
+    springs.add(loaded_springs(particle_wall, dem.particle_wall, pw, pw_ratio * r), m, inertia,
+                pw_ratio * r, "P-W");
   return springs;
+}
+
+}  // namespace
+
+StiffestSpring design_springs(const DemParameters& dem, const ContactLawChoice& particle_particle,
+                              const ContactLawChoice& particle_wall, double design_overlap) {
+  return springs_at(dem, particle_particle, particle_wall, design_overlap, design_overlap);
+}
+
+StiffestSpring current_springs(const DemParameters& dem, const ContactLawChoice& law,
+                               double particle_particle_ratio, double particle_wall_ratio) {
+  return springs_at(dem, law, law, particle_particle_ratio, particle_wall_ratio);
 }
 
 StableTimeStep stable_time_step(const DemParameters& dem, const StiffestSpring& springs,

@@ -56,6 +56,13 @@ class StiffestSpring {
 StiffestSpring design_springs(const DemParameters& dem, const ContactLawChoice& particle_particle,
                               const ContactLawChoice& particle_wall, double design_overlap);
 
+// During a run: the springs of the deepest current P-P and P-W contacts, each at its own
+// overlap over the radius (0: no such contact, not added), loaded and reversed once like the
+// design springs. Every law's springs stiffen with the overlap (Hertz sqrt(delta), the
+// hysteretic unloading slope k1 = A1 delta_max + A2), so these are the stiffest of the run now.
+StiffestSpring current_springs(const DemParameters& dem, const ContactLawChoice& law,
+                               double particle_particle_ratio, double particle_wall_ratio);
+
 StableTimeStep stable_time_step(const DemParameters& dem, const StiffestSpring& springs,
                                 const TimeStepSettings& settings);
 
