@@ -5,10 +5,11 @@
 #include <memory>
 #include <sstream>
 
-#include "designer/design/design_check.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/dem_scene_run.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "reports/result_format.hpp"
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 #include "models/core/errors.hpp"
@@ -25,12 +26,6 @@ std::string fmt(double v, int digits = 3) {
   s.precision(digits);
   s << v;
   return s.str();
-}
-
-const Estimate* find_result(const DesignRecord& r, const std::string& name) {
-  for (const auto& [key, e] : r.results)
-    if (key == name) return &e;
-  return nullptr;
 }
 
 const std::vector<TimeSeriesColumn> kColumns = {
@@ -129,9 +124,7 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
                "DEM (" + law + "): highest particle top per " + fmt(2 * r * 1e3) +
                    " mm bin, mean over mid-ramp +-5 % (band: the bins' range)",
                Rung::L3, "mm"});
-  const DesignRecord reduced = design_check(c);
-  for (const char* name : {"stopping_thickness", "deposit_thickness_mid_ramp"})
-    if (const Estimate* e = find_result(reduced, name)) record.results.emplace_back(std::string("reduced_model_") + name, *e);
+  add_reduced_model_results(c, {"stopping_thickness", "deposit_thickness_mid_ramp"}, record);
   record.results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
                                                         "DEM: farthest bin with a particle", Rung::L3, ""});
   const double n = static_cast<double>(scene->engine().particles().size());
@@ -158,7 +151,7 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
     h.y.push_back(d.height[b] * 1e3);
   }
   profile.series.push_back(h);
-  if (const Estimate* e = find_result(reduced, "stopping_thickness"); e && e->is_number())
+  if (const Estimate* e = find_result(record, reduced_model_key("stopping_thickness")); e && e->is_number())
     profile.series.push_back({"h_stop (reduced model)", SeriesStyle::dashed, {0.0, chute.length},
                               {std::get<double>(e->value) * 1e3, std::get<double>(e->value) * 1e3}, {}});
   profile.note = "as the seed's DEM measured it: the highest particle along the ramp";

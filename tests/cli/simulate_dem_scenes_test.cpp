@@ -49,7 +49,7 @@ TEST_F(SimulateDem, DrumWritesRungL3AngleAndRegime) {
   EXPECT_LT(a, 70.0);
   EXPECT_LE(angle.at("low").get<double>(), a);
   EXPECT_GE(angle.at("high").get<double>(), a);
-  EXPECT_EQ(results.at("reduced_model_dynamic_angle_of_repose").at("rung"), "L0");
+  EXPECT_EQ(results.at("dynamic_angle_of_repose_reduced_model").at("rung"), "L0");
   EXPECT_NE(slurp(dir_ / "run/timeseries.csv").find("dynamic_angle_of_repose [deg]"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir_ / "run/checkpoint.h5"));
 }
