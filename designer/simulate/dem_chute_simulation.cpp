@@ -77,7 +77,15 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
     scene = std::make_unique<InclinedPlaneScene>(settings, spec, read_dem_checkpoint(request.restart));
     origin = static_cast<long>(saved.at(0));
   }
-  const double release = scene->engine().time() - (scene->engine().step() - origin) * scene->engine().time_step();
+  // The release time itself is kept in the checkpoint: recomputing it from the step count
+  // rounds differently from the engine's summed time, and the series' time column would drift.
+  double release = scene->engine().time();
+  if (!request.restart.empty()) {
+    Hdf5File file(request.restart, Hdf5File::Mode::read);
+    release = file.exists("/scene/plane_release")
+                  ? file.read<double>("/scene/plane_release").at(0)
+                  : scene->engine().time() - (scene->engine().step() - origin) * scene->engine().time_step();
+  }
 
   DemSceneRun run;
   run.label = "DEM inclined plane";
@@ -99,8 +107,9 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
                  ? std::string("the flow has stopped: kinetic energy per particle below 1e-3 m g d")
                  : std::string();
     };
-  run.save_scene = [origin](Hdf5File& f) {
+  run.save_scene = [origin, release](Hdf5File& f) {
     f.write("/scene/plane_origin", std::vector<double>{static_cast<double>(origin)}, {1}, "step (release)");
+    f.write("/scene/plane_release", std::vector<double>{release}, {1}, "s");
   };
   DemSceneResult ran = run_dem_scene(scene->engine(), request, run);
 
