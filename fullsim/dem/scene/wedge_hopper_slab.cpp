@@ -122,6 +122,10 @@ RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t 
   s.initial_velocity = Vec3(0, 0, -kRainSpeed);
   s.insert_time_cap = 6.0 * kFillDuration + 2.0;
   s.settle_time_cap = 0.5;
+  // The rain region rides kFollowGap over the resting fill and admits() stops it at the wall top:
+  // once the fill comes that close nothing more can be placed, so inserting ends there instead of
+  // idling to the time cap (the pilot slab's 20 % surplus does not fit under its wall top).
+  s.target_height = wall_top() - kFollowGap - 2.0 * radius;
   s.trim_height = fill_top();
   s.band_origin = 0.0;
   s.band_height = fill_top() / std::max(1, bands);
