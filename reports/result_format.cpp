@@ -7,10 +7,19 @@
 
 namespace feedflow {
 
+namespace {
+constexpr const char* kReducedModelSuffix = "_reduced_model";
+}  // namespace
+
+std::string reduced_model_key(const std::string& name) { return name + kReducedModelSuffix; }
+
 std::string quantity_label(const std::string& name) {
   std::string s = name.substr(name.rfind('.') == std::string::npos ? 0 : name.rfind('.') + 1);
+  const std::string suffix = kReducedModelSuffix;
+  const bool reduced = s.size() > suffix.size() && s.ends_with(suffix);
+  if (reduced) s.resize(s.size() - suffix.size());
   std::replace(s.begin(), s.end(), '_', ' ');
-  return s;
+  return reduced ? s + " (reduced model)" : s;
 }
 
 namespace {

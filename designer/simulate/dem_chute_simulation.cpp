@@ -5,10 +5,11 @@
 #include <memory>
 #include <sstream>
 
-#include "designer/design/design_check.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/dem_scene_run.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "reports/result_format.hpp"
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 #include "models/core/errors.hpp"
@@ -25,12 +26,6 @@ std::string fmt(double v, int digits = 3) {
   s.precision(digits);
   s << v;
   return s.str();
-}
-
-const Estimate* find_result(const DesignRecord& r, const std::string& name) {
-  for (const auto& [key, e] : r.results)
-    if (key == name) return &e;
-  return nullptr;
 }
 
 const std::vector<TimeSeriesColumn> kColumns = {
@@ -82,7 +77,15 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
     scene = std::make_unique<InclinedPlaneScene>(settings, spec, read_dem_checkpoint(request.restart));
     origin = static_cast<long>(saved.at(0));
   }
-  const double release = scene->engine().time() - (scene->engine().step() - origin) * scene->engine().time_step();
+  // The release time itself is kept in the checkpoint: recomputing it from the step count
+  // rounds differently from the engine's summed time, and the series' time column would drift.
+  double release = scene->engine().time();
+  if (!request.restart.empty()) {
+    Hdf5File file(request.restart, Hdf5File::Mode::read);
+    release = file.exists("/scene/plane_release")
+                  ? file.read<double>("/scene/plane_release").at(0)
+                  : scene->engine().time() - (scene->engine().step() - origin) * scene->engine().time_step();
+  }
 
   DemSceneRun run;
   run.label = "DEM inclined plane";
@@ -104,8 +107,9 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
                  ? std::string("the flow has stopped: kinetic energy per particle below 1e-3 m g d")
                  : std::string();
     };
-  run.save_scene = [origin](Hdf5File& f) {
+  run.save_scene = [origin, release](Hdf5File& f) {
     f.write("/scene/plane_origin", std::vector<double>{static_cast<double>(origin)}, {1}, "step (release)");
+    f.write("/scene/plane_release", std::vector<double>{release}, {1}, "s");
   };
   DemSceneResult ran = run_dem_scene(scene->engine(), request, run);
 
@@ -129,9 +133,7 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
                "DEM (" + law + "): highest particle top per " + fmt(2 * r * 1e3) +
                    " mm bin, mean over mid-ramp +-5 % (band: the bins' range)",
                Rung::L3, "mm"});
-  const DesignRecord reduced = design_check(c);
-  for (const char* name : {"stopping_thickness", "deposit_thickness_mid_ramp"})
-    if (const Estimate* e = find_result(reduced, name)) record.results.emplace_back(std::string("reduced_model_") + name, *e);
+  add_reduced_model_results(c, {"stopping_thickness", "deposit_thickness_mid_ramp"}, record);
   record.results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
                                                         "DEM: farthest bin with a particle", Rung::L3, ""});
   const double n = static_cast<double>(scene->engine().particles().size());
@@ -158,7 +160,7 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
     h.y.push_back(d.height[b] * 1e3);
   }
   profile.series.push_back(h);
-  if (const Estimate* e = find_result(reduced, "stopping_thickness"); e && e->is_number())
+  if (const Estimate* e = find_result(record, reduced_model_key("stopping_thickness")); e && e->is_number())
     profile.series.push_back({"h_stop (reduced model)", SeriesStyle::dashed, {0.0, chute.length},
                               {std::get<double>(e->value) * 1e3, std::get<double>(e->value) * 1e3}, {}});
   profile.note = "as the seed's DEM measured it: the highest particle along the ramp";

@@ -5,10 +5,11 @@
 #include <numbers>
 #include <sstream>
 
-#include "designer/design/design_check.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/dem_scene_run.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "reports/result_format.hpp"
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/dem/scene/drum_angle_watch.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
@@ -20,12 +21,6 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDefaultRotation = 10.0;  // [s] of rotation at most (the seed's 10 s)
-
-const Estimate* find_result(const DesignRecord& r, const std::string& name) {
-  for (const auto& [key, e] : r.results)
-    if (key == name) return &e;
-  return nullptr;
-}
 
 std::string fmt(double v, int digits = 3) {
   std::ostringstream s;
@@ -158,10 +153,7 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
                                   : "DEM: the run ended within the spin-up of " + fmt(watch->spin_up()) + " s",
                          Rung::L3, ""});
   // The reduced-model values of the same quantities (feedflow design).
-  const DesignRecord reduced = design_check(c);
-  for (const char* name : {"dynamic_angle_of_repose", "regime"})
-    if (const Estimate* e = find_result(reduced, name))
-      record.results.emplace_back(std::string("reduced_model_") + name, *e);
+  add_reduced_model_results(c, {"dynamic_angle_of_repose", "regime"}, record);
   record.results.emplace_back("particles", Estimate{n, "", std::nullopt, std::nullopt, "DEM scene", Rung::L3, ""});
   if (steady)
     record.results.emplace_back("steady_window", Estimate{steady->to - steady->from, "s", steady->from, steady->to,
@@ -201,7 +193,7 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
   if (steady && steady->angle != 0.0)
     chart.series.push_back({"steady mean with 2 SD band", SeriesStyle::band, {steady->from, steady->to},
                             {steady->low / kDeg, steady->low / kDeg}, {steady->high / kDeg, steady->high / kDeg}});
-  if (const Estimate* e = find_result(reduced, "dynamic_angle_of_repose"); e && e->is_number() && !line.x.empty())
+  if (const Estimate* e = find_result(record, reduced_model_key("dynamic_angle_of_repose")); e && e->is_number() && !line.x.empty())
     chart.series.push_back({"reduced model (feedflow design)", SeriesStyle::dashed, {0.0, line.x.back()},
                             {std::get<double>(e->value), std::get<double>(e->value)}, {}});
   chart.note = "the angle is the mid-chord slope of the surface; the band is 2 SD of the snapshots in the steady window";

@@ -5,7 +5,7 @@
 #include <map>
 #include <sstream>
 
-#include "designer/design/design_check.hpp"
+#include "reports/result_format.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/dem_hopper_scene.hpp"
 #include "designer/simulate/dem_scene_run.hpp"
@@ -189,9 +189,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
                                      result.stop_reason.empty() ? "the run's duration" : result.stop_reason));
 
   // The reduced models beside it.
-  const DesignRecord reduced = design_check(c);
-  for (const char* name : {"mass_flow_rate", "critical_outlet_width", "flow_pattern"})
-    if (const Estimate* e = find_result(reduced, name)) record.results.emplace_back(std::string(name) + "_reduced", *e);
+  add_reduced_model_results(c, {"mass_flow_rate", "critical_outlet_width", "flow_pattern"}, record);
 
   VerdictBuilder verdict;
   if (arched) verdict.fail("the DEM slab arches over the outlet");
@@ -213,7 +211,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
     dem.y.push_back(r[2] * scale);
   }
   chart.series.push_back(dem);
-  if (const Estimate* q = find_result(reduced, "mass_flow_rate"); q && q->is_number() && !dem.x.empty()) {
+  if (const Estimate* q = find_result(record, reduced_model_key("mass_flow_rate")); q && q->is_number() && !dem.x.empty()) {
     const double qr = std::get<double>(q->value);
     const double t0 = rate.found ? rate.window_start : 0.0;
     double m0 = 0.0;

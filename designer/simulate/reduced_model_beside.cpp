@@ -1,6 +1,7 @@
 #include "designer/simulate/reduced_model_beside.hpp"
 
 #include "designer/design/design_check.hpp"
+#include "reports/result_format.hpp"
 
 namespace feedflow {
 
@@ -15,7 +16,7 @@ void add_reduced_model_results(const Case& c, const std::vector<std::string>& na
   const DesignRecord design = design_check(c);
   for (const auto& name : names)
     if (const Estimate* e = find_result(design, name))
-      record.results.emplace_back(name + "_reduced_model", *e);
+      record.results.emplace_back(reduced_model_key(name), *e);
 }
 
 }  // namespace feedflow

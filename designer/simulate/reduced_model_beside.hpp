@@ -1,6 +1,7 @@
 #pragma once
 // The reduced-model value of a quantity beside the simulated one: runs the design check of the
-// same case and copies the named results as "<name>_reduced_model" (their own rung and band).
+// same case and copies the named results under reduced_model_key(name), i.e.
+// "<name>_reduced_model" (their own rung and band). Every simulated scene (DEM and CEL) uses it.
 #include <string>
 #include <vector>
 

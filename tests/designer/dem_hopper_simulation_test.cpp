@@ -51,7 +51,7 @@ TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
   const fs::path out = scratch("flow");
   const SimulationOutcome o = simulate(kTwin, {}, out);
   const Estimate* q = find(o.record, "mass_flow_rate");
-  const Estimate* reduced = find(o.record, "mass_flow_rate_reduced");
+  const Estimate* reduced = find(o.record, "mass_flow_rate_reduced_model");
   ASSERT_TRUE(q && reduced);
   EXPECT_EQ(q->rung, Rung::L3);
   const double v = std::get<double>(q->value);
@@ -115,7 +115,7 @@ TEST(DemHopperSimulation, LONG_PilotHopperFlowsAtSixtyMillimetres) {
   const fs::path out = scratch("pilot");
   const SimulationOutcome o = simulate("cases/pilot_hopper.toml", {}, out);
   const Estimate* q = find(o.record, "mass_flow_rate");
-  const Estimate* reduced = find(o.record, "mass_flow_rate_reduced");
+  const Estimate* reduced = find(o.record, "mass_flow_rate_reduced_model");
   ASSERT_TRUE(q && reduced);
   EXPECT_EQ(q->rung, Rung::L3);
   EXPECT_LT(*q->low, *reduced->high);

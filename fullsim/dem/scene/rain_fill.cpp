@@ -1,6 +1,7 @@
 #include "fullsim/dem/scene/rain_fill.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -169,6 +170,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
                           : static_cast<double>(std::min<std::size_t>(s.target_count, 1u << 30)) * sphere_mass;
   ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
   double next_note = 0.1 * goal;
+  const auto wall_start = ProgressLine::Clock::now();
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
     if (!run_until_or_interrupted(engine, engine.time() + s.batch_interval)) {
       report.interrupted = true;
@@ -177,8 +179,13 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     insert_batch();
     progress.update(report.inserted_mass);
     if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
-      log << format("  fill: %.4g of %.4g kg in at t = %.4g s\n", report.inserted_mass, goal,
-                    engine.time());
+      const double elapsed =
+          std::chrono::duration<double>(ProgressLine::Clock::now() - wall_start).count();
+      const double eta = ProgressLine::eta_seconds(elapsed, report.inserted_mass / goal);
+      log << format("  fill: %.4g of %.4g kg in at t = %.4g s (%zu spheres), %.0f s wall, "
+                    "ETA of the insertion %.0f s\n",
+                    report.inserted_mass, goal, engine.time(), engine.particles().size(), elapsed,
+                    std::max(0.0, eta));
       next_note += 0.1 * goal;
     }
   }
@@ -190,6 +197,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
 
   // Settling: at least one check interval, so freshly inserted spheres have landed.
   const double settle_start = engine.time();
+  long settle_checks = 0;
   do {
     if (!run_until_or_interrupted(engine, engine.time() + s.settle_check_interval)) {
       report.interrupted = true;
@@ -197,6 +205,9 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     }
     report.final_max_speed = kept_max_speed(engine.particles(), s.trim_height);
     report.settled = report.final_max_speed < s.settle_speed;
+    if (++settle_checks % 20 == 0)  // a line per 0.1 s of settling (default check interval)
+      log << format("  fill: settling at t = %.4g s, largest kept speed %.3g mm/s (goal %.3g)\n",
+                    engine.time(), report.final_max_speed * 1e3, s.settle_speed * 1e3);
   } while (!report.settled && engine.time() - settle_start < s.settle_time_cap);
 
   ParticleStore& p = engine.particles();
