@@ -42,12 +42,9 @@ class ForceKernel {
   virtual std::string name() const = 0;
   // Doubles of history per contact (pair entry or particle-wall pair).
   virtual std::size_t history_size() const = 0;
-  // Adds the particle-particle forces and torques of the neighbour list.
-  virtual DeepestOverlap add_pair_forces(ForceContext& c) = 0;
-  // Adds the particle-wall forces and torques (P-W parameter set).
-  virtual DeepestOverlap add_wall_forces(ForceContext& c) = 0;
-  // Both of the above in one parallel region (one thread start per step instead of two), with
-  // the same sums; `wall_seconds` is the time one thread spent on its wall contacts [s].
+  // Adds the particle-particle forces and torques of the neighbour list and the particle-wall
+  // ones (P-W parameter set) in one parallel region; `wall_seconds` is the time one thread spent
+  // on its wall contacts [s].
   virtual void add_contact_forces(ForceContext& c, DeepestOverlap& pairs, DeepestOverlap& walls,
                                   double& wall_seconds) = 0;
 };

@@ -31,13 +31,6 @@ class LawForces final : public ForceKernel {
   std::string name() const override { return Law::name(); }
   std::size_t history_size() const override { return kHistory; }
 
-  // flatten: the composed law's parts (and Eigen's small-vector helpers) are inlined into the
-  // loop; left to the inliner's size limits they stayed out-of-line calls per contact.
-  DeepestOverlap add_pair_forces(ForceContext& c) override {
-    double unused = 0.0;
-    return contact_forces(c, nullptr, unused);
-  }
-
   void add_contact_forces(ForceContext& c, DeepestOverlap& pairs, DeepestOverlap& walls,
                           double& wall_seconds) override {
     const bool any_wall = !c.walls.empty() || !c.meshes.empty();
@@ -49,7 +42,8 @@ class LawForces final : public ForceKernel {
   // The pair loop, and with `walls` also the wall contacts: each thread runs those of its own
   // rows once their pair forces and queued reactions are in (the order of the sums on each
   // particle is that of the two loops run one after the other). `wall_seconds`: thread 0's
-  // time on its walls.
+  // time on its walls. flatten: the composed law's parts (and Eigen's small-vector helpers) are
+  // inlined into the loop; left to the inliner's size limits they stayed out-of-line calls.
   [[gnu::flatten]] DeepestOverlap contact_forces(ForceContext& c, DeepestOverlap* walls,
                                                  double& wall_seconds) {
     ParticleStore& p = c.particles;
@@ -223,26 +217,6 @@ class LawForces final : public ForceKernel {
         if (o.wall_worst.ratio > walls->ratio ||
             (o.wall_worst.ratio == walls->ratio && o.wall_worst.slot < walls->slot))
           *walls = o.wall_worst;
-    return result;
-  }
-
-  [[gnu::flatten]] DeepestOverlap add_wall_forces(ForceContext& c) override {
-    DeepestOverlap result;
-    if (c.walls.empty() && c.meshes.empty()) return result;
-    const std::size_t n = c.particles.size();
-#pragma omp parallel if (c.parallel)
-    {
-#ifdef _OPENMP
-      const auto nt = static_cast<std::size_t>(omp_get_num_threads());
-      const auto tid = static_cast<std::size_t>(omp_get_thread_num());
-#else
-      const std::size_t nt = 1, tid = 0;
-#endif
-      const DeepestOverlap worst = wall_rows(c, n * tid / nt, n * (tid + 1) / nt);
-#pragma omp critical
-      if (worst.ratio > result.ratio || (worst.ratio == result.ratio && worst.slot < result.slot))
-        result = worst;
-    }
     return result;
   }
 
