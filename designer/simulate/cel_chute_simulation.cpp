@@ -57,12 +57,8 @@ SimulationOutcome simulate_chute_with_cel(const SimulationRequest& request) {
   const cel::CelSceneRun& run = *r.run;
   const cel::CelSolver& s = run.solver();
 
-  SimulationOutcome out;
-  out.end = r.end;
-  out.files = r.files;
-  out.series = TimeSeries({{"time", "s"}, {"kinetic_energy", "J"}, {"mass_on_grid", "kg"},
+  SimulationOutcome out = outcome_of(r, {{"time", "s"}, {"kinetic_energy", "J"}, {"mass_on_grid", "kg"},
                            {"run_off_mass", "kg"}, {"thickness_mid_ramp", "m"}});
-  for (auto& row : r.samples) out.series.add_row(row);
   DesignRecord& rec = out.record;
   VerdictBuilder verdict;
   if (run.phase() == cel::ScenePhase::event) {
@@ -108,9 +104,7 @@ SimulationOutcome simulate_chute_with_cel(const SimulationRequest& request) {
   } else {
     verdict.note("the run ended in the gravity phase: nothing measured");
   }
-  rec.results.emplace_back("cell_updates_per_second",
-                           Estimate{r.cell_updates_per_second, "1/s", std::nullopt, std::nullopt,
-                                    "wall-clock throughput of the steps", Rung::L2, ""});
+  add_throughput_result(r, rec);
   add_reduced_model_results(c, {"stopping_thickness", "deposit_thickness_mid_ramp"}, rec);
   rec.verdict = verdict.verdict();
   rec.assumptions = {

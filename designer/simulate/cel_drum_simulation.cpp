@@ -41,12 +41,8 @@ SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request) {
   CelRunResult r = run_cel_scene(request, std::move(setup));
   const cel::CelSceneRun& run = *r.run;
 
-  SimulationOutcome out;
-  out.end = r.end;
-  out.files = r.files;
-  out.series = TimeSeries({{"time", "s"}, {"surface_angle", "deg"}, {"kinetic_energy", "J"},
+  SimulationOutcome out = outcome_of(r, {{"time", "s"}, {"surface_angle", "deg"}, {"kinetic_energy", "J"},
                            {"mass", "kg"}});
-  for (auto& row : r.samples) out.series.add_row(row);
   DesignRecord& rec = out.record;
   VerdictBuilder verdict;
   if (run.phase() != cel::ScenePhase::event) {
@@ -86,9 +82,7 @@ SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request) {
   rec.results.emplace_back("mass_balance_error",
                            Estimate{run.solver().total_mass() / run.initial_mass() - 1.0, "",
                                     std::nullopt, std::nullopt, "grid / initial - 1 (closed drum)", Rung::L2, ""});
-  rec.results.emplace_back("cell_updates_per_second",
-                           Estimate{r.cell_updates_per_second, "1/s", std::nullopt, std::nullopt,
-                                    "wall-clock throughput of the steps", Rung::L2, ""});
+  add_throughput_result(r, rec);
   add_reduced_model_results(c, {"dynamic_angle_of_repose", "regime"}, rec);
   rec.verdict = verdict.verdict();
   rec.assumptions = {

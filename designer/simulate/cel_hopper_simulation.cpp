@@ -47,12 +47,8 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
   const cel::CelSceneRun& run = *r.run;
   const cel::CelSolver& s = run.solver();
 
-  SimulationOutcome out;
-  out.end = r.end;
-  out.files = r.files;
-  out.series = TimeSeries({{"time", "s"}, {"discharged_mass", "kg"}, {"mass_in_hopper", "kg"},
+  SimulationOutcome out = outcome_of(r, {{"time", "s"}, {"discharged_mass", "kg"}, {"mass_in_hopper", "kg"},
                            {"kinetic_energy", "J"}});
-  for (auto& row : r.samples) out.series.add_row(row);
   DesignRecord& rec = out.record;
   VerdictBuilder verdict;
   const double rho = c.material.bulk.density, w = hopper.outlet_width;
@@ -123,9 +119,7 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
     chart.note = "Ledger of the outflow face, scaled from the half slice to the slot length.";
     rec.charts.push_back(chart);
   }
-  rec.results.emplace_back("cell_updates_per_second",
-                           Estimate{r.cell_updates_per_second, "1/s", std::nullopt, std::nullopt,
-                                    "wall-clock throughput of the steps", Rung::L2, ""});
+  add_throughput_result(r, rec);
   add_reduced_model_results(c, {"mass_flow_rate", "flow_pattern", "critical_outlet_width"}, rec);
   rec.verdict = verdict.verdict();
   rec.assumptions = {

@@ -146,4 +146,19 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
   return result;
 }
 
+SimulationOutcome outcome_of(const CelRunResult& r, std::vector<TimeSeriesColumn> columns) {
+  SimulationOutcome out;
+  out.end = r.end;
+  out.files = r.files;
+  out.series = TimeSeries(std::move(columns));
+  for (const auto& row : r.samples) out.series.add_row(row);
+  return out;
+}
+
+void add_throughput_result(const CelRunResult& r, DesignRecord& rec) {
+  rec.results.emplace_back("cell_updates_per_second",
+                           Estimate{r.cell_updates_per_second, "1/s", std::nullopt, std::nullopt,
+                                    "wall-clock throughput of the steps", Rung::L2, ""});
+}
+
 }  // namespace feedflow

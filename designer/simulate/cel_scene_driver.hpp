@@ -35,6 +35,12 @@ struct CelRunResult {
   double wall_seconds = 0.0;
 };
 
+// A CEL outcome's common part: how the run ended, its files, and the samples under `columns`.
+SimulationOutcome outcome_of(const CelRunResult& r, std::vector<TimeSeriesColumn> columns);
+
+// The wall-clock throughput row every CEL record carries (cell updates per second).
+void add_throughput_result(const CelRunResult& r, DesignRecord& rec);
+
 // The scene's material from the case (bulk density, seed deck void ratio) and the cell size
 // ([cel] cell_size or `default_cell_size`).
 cel::SceneMaterial scene_material(const Case& c);
