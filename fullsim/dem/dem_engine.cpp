@@ -17,6 +17,10 @@
 #include "fullsim/dem/morton_order.hpp"
 #include "models/core/errors.hpp"
 
+// force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
+// (fullsim/CMakeLists.txt); a build whose flags give Eigen wider alignment must change both.
+static_assert(EIGEN_MAX_STATIC_ALIGN_BYTES == 16, "Eigen alignment differs from force_kernel.cpp");
+
 namespace feedflow {
 namespace {
 

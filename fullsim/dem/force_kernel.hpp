@@ -27,7 +27,11 @@ struct ForceContext {
   double time = 0.0;  // [s]
   double dt = 0.0;    // [s]
   bool parallel = true;  // run the loops on the OpenMP threads (off for small systems)
+  bool wide_lanes = true;  // the AVX2 lanes of the pair loop where the processor has them
 };
+
+// Whether this processor runs the pair loop's AVX2 lanes (AVX2 and FMA); looked up once.
+bool wide_lanes_available();
 
 // The deepest contact seen by a loop: overlap over the smaller radius.
 struct DeepestOverlap {

@@ -15,6 +15,7 @@
 #include <omp.h>
 #endif
 
+#include "fullsim/dem/contact_batch.hpp"
 #include "fullsim/dem/force_kernel.hpp"
 
 namespace feedflow {
@@ -92,6 +93,7 @@ class LawForces final : public ForceKernel {
     // here by the very same expressions, so the results stay bit for bit those of the general
     // loop, without three divisions per contact.
     const UniformBodies uniform = uniform_bodies(p, c.neighbours.rebuild_count());
+    const bool wide = c.wide_lanes && wide_lanes_available();
 
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
@@ -105,45 +107,51 @@ class LawForces final : public ForceKernel {
       queue.clear();
       DeepestOverlap worst;
       // Two passes over batches of entries: the first finds the touching pairs and their
-      // kinematics (short, independent iterations the core overlaps, hiding the latency of
-      // the square root and division of each), the second runs the law on them in the same
-      // order. Row i's own force and torque are summed in a local and added when its row is
-      // done, as a single pass would, so the sums are the same bit for bit.
-      std::array<Touching, kBatch> batch;
+      // kinematics, the law then runs over the whole batch as one vectorised loop
+      // (ContactBatch), and the forces are added lane by lane in entry order. Row i's own force
+      // and torque are summed in a local and added when its row is done, as a single pass
+      // would, so the sums are the same bit for bit.
+      Batch& b = own_[tid].batch;
       std::size_t row = begin;  // the row whose force is being summed
       Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
-      auto run_batch = [&](std::size_t count) {
-        for (std::size_t k = 0; k < count; ++k) {
-          Touching& b = batch[k];
-          if (b.i != row) {
+      auto run_batch = [&]() {
+#if defined(__x86_64__)
+        if (wide) b.evaluate_wide(particle_particle_, dt);
+        else b.evaluate(particle_particle_, dt);
+#else
+        b.evaluate(particle_particle_, dt);
+#endif
+        for (std::size_t k = 0; k < b.count; ++k) {
+          if (b.i[k] != row) {
             force[row] += fi;
             torque[row] += ti;
             fi.setZero();
             ti.setZero();
-            row = b.i;
+            row = b.i[k];
           }
-          double* h = history + static_cast<std::size_t>(b.entry) * kHistory;
-          History hist;
-          if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-          const ContactOutput out = particle_particle_.evaluate(b.in, hist);
-          if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
-          const Vec3 f = out.normal_force * b.in.normal + out.tangential_force;
-          const Vec3 lever = b.in.normal.cross(out.tangential_force);
+          double* h = history + static_cast<std::size_t>(b.entry[k]) * kHistory;
+          for (std::size_t q = 0; q < kHistory; ++q) h[q] = b.history[q][k];
+          const Vec3 normal(b.nx[k], b.ny[k], b.nz[k]);
+          const Vec3 tangential(b.ftx[k], b.fty[k], b.ftz[k]);
+          const Vec3 rolling(b.mx[k], b.my[k], b.mz[k]);
+          const Vec3 f = b.fn[k] * normal + tangential;
+          const Vec3 lever = normal.cross(tangential);
           fi += f;
-          ti += out.rolling_torque - b.ci * lever;
-          const Vec3 tj = -(out.rolling_torque + b.cj * lever);
-          const std::size_t j = b.j;
+          ti += rolling - b.ci[k] * lever;
+          const Vec3 tj = -(rolling + b.cj[k] * lever);
+          const std::size_t j = b.j[k];
           if (j >= begin && j < end) {
             force[j] -= f;
             torque[j] += tj;
           } else {
-            queue.push_back({b.j, -f, tj});
+            queue.push_back({b.j[k], -f, tj});
           }
-          const double smaller = std::min(rad[b.i], rad[j]);
-          if (b.in.overlap > worst.ratio * smaller) worst = {b.in.overlap / smaller, b.i, false};
+          const double smaller = std::min(rad[b.i[k]], rad[j]);
+          if (b.overlap[k] > worst.ratio * smaller) worst = {b.overlap[k] / smaller, b.i[k], false};
         }
+        b.count = 0;
       };
-      std::size_t count = 0;
+      b.count = 0;
       for (std::size_t i = begin; i < end; ++i) {
         const Vec3 xi = x[i];
         const double ri = rad[i];
@@ -152,43 +160,52 @@ class LawForces final : public ForceKernel {
           const Vec3 d = box.minimum_image(xi - x[j]);
           const double rj = rad[j];
           const double reach = ri + rj;
-          const double r2 = d.squaredNorm();
+          const double r2 = squared_norm(d);  // contact_kinematics.hpp
           if (r2 >= reach * reach) {
             clear(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
           const double r = std::sqrt(r2);
-          Touching& b = batch[count];
-          b.i = static_cast<std::uint32_t>(i);
-          b.j = static_cast<std::uint32_t>(j);
-          b.entry = e;
-          ContactInput& in = b.in;
-          in.overlap = reach - r;
-          in.normal = d * (1.0 / r);
-          b.ci = ri - 0.5 * in.overlap;
-          b.cj = rj - 0.5 * in.overlap;
+          const std::size_t k = b.count;
+          b.i[k] = static_cast<std::uint32_t>(i);
+          b.j[k] = static_cast<std::uint32_t>(j);
+          b.entry[k] = e;
+          const double overlap = reach - r;
+          const Vec3 normal = d * (1.0 / r);
+          const double ci = ri - 0.5 * overlap;
+          const double cj = rj - 0.5 * overlap;
           const Vec3 vr = v[i] - v[j];
-          in.normal_velocity = vr.dot(in.normal);
-          in.tangential_velocity =
-              vr - in.normal_velocity * in.normal + in.normal.cross(b.ci * w[i] + b.cj * w[j]);
-          in.relative_angular_velocity = w[i] - w[j];
+          const double vn = dot(vr, normal);
+          const Vec3 vt = vr - vn * normal + normal.cross(ci * w[i] + cj * w[j]);
+          const Vec3 wr = w[i] - w[j];
+          b.overlap[k] = overlap;
+          b.nx[k] = normal.x();
+          b.ny[k] = normal.y();
+          b.nz[k] = normal.z();
+          b.vn[k] = vn;
+          b.vtx[k] = vt.x();
+          b.vty[k] = vt.y();
+          b.vtz[k] = vt.z();
+          b.wx[k] = wr.x();
+          b.wy[k] = wr.y();
+          b.wz[k] = wr.z();
+          b.ci[k] = ci;
+          b.cj[k] = cj;
           if (uniform.yes) {
-            in.effective_radius = uniform.radius;
-            in.effective_mass = uniform.mass;
-            in.effective_inertia = uniform.inertia;
+            b.radius[k] = uniform.radius;
+            b.mass[k] = uniform.mass;
+            b.inertia[k] = uniform.inertia;
           } else {
-            in.effective_radius = ri * rj / reach;
-            in.effective_mass = mass[i] * mass[j] / (mass[i] + mass[j]);
-            in.effective_inertia = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
+            b.radius[k] = ri * rj / reach;
+            b.mass[k] = mass[i] * mass[j] / (mass[i] + mass[j]);
+            b.inertia[k] = inertia[i] * inertia[j] / (inertia[i] + inertia[j]);
           }
-          in.dt = dt;
-          if (++count == kBatch) {
-            run_batch(count);
-            count = 0;
-          }
+          const double* h = history + static_cast<std::size_t>(e) * kHistory;
+          for (std::size_t q = 0; q < kHistory; ++q) b.history[q][k] = h[q];
+          if (++b.count == Batch::kSize) run_batch();
         }
       }
-      run_batch(count);
+      run_batch();
       if (begin < end) {
         force[row] += fi;
         torque[row] += ti;
@@ -266,7 +283,7 @@ class LawForces final : public ForceKernel {
           for (int s = 0; s < kSlots; ++s) {
             if (taken[s]) continue;
             const double* sn = slots + s * kSlot;
-            const double d = touch[q].normal.dot(Vec3(sn[0], sn[1], sn[2]));
+            const double d = dot(touch[q].normal, Vec3(sn[0], sn[1], sn[2]));
             if (d > best) {
               best = d;
               slot_of[q] = s;
@@ -299,16 +316,8 @@ class LawForces final : public ForceKernel {
     return worst;
   }
 
- public:
-
  private:
-  // A touching pair found by the first pass of the pair loop, with what the law needs.
-  struct Touching {
-    ContactInput in;
-    double ci = 0.0, cj = 0.0;  // distances from the centres to the contact point [m]
-    std::uint32_t i = 0, j = 0, entry = 0;
-  };
-  static constexpr std::size_t kBatch = 32;
+  using Batch = ContactBatch<kHistory>;
   struct UniformBodies {
     bool yes = false;
     double radius = 0.0, mass = 0.0, inertia = 0.0;  // R*, m*, I* of every pair
@@ -341,7 +350,7 @@ class LawForces final : public ForceKernel {
     in.normal = normal;
     const double ci = ri - overlap;
     const Vec3 vr = p.velocity[i] - surface_velocity;
-    in.normal_velocity = vr.dot(in.normal);
+    in.normal_velocity = dot(vr, in.normal);
     in.tangential_velocity =
         vr - in.normal_velocity * in.normal + in.normal.cross(ci * p.angular_velocity[i]);
     in.relative_angular_velocity = p.angular_velocity[i] - wall_angular_velocity;
@@ -388,6 +397,7 @@ class LawForces final : public ForceKernel {
   // What one thread of the pair loop owns, on cache lines of its own (the queue's size is
   // written at every push; two threads' queues on one line would bounce it between cores).
   struct alignas(64) ThreadShare {
+    Batch batch;
     std::vector<Reaction> queue;
     DeepestOverlap worst;
     DeepestOverlap wall_worst;

@@ -3,6 +3,7 @@
 // cylinder (particles inside or outside). A wall may move rigidly with a linear velocity and
 // an angular velocity about a centre (a drum turns about its axis), and may be removed at a
 // given time (a gate lifted). Its contacts use the particle-wall parameter set.
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -60,12 +61,12 @@ class Wall {
   WallTouch touch(const Vec3& x) const {
     WallTouch t;
     if (shape_ == WallShape::plane) {
-      t.gap = (x - point_).dot(direction_);
+      t.gap = dot(x - point_, direction_);  // models/contact/contact_kinematics.hpp
       t.normal = direction_;
     } else {
       const Vec3 rel = x - point_;
-      const Vec3 radial = rel - rel.dot(direction_) * direction_;
-      const double r = radial.norm();
+      const Vec3 radial = rel - dot(rel, direction_) * direction_;
+      const double r = std::sqrt(squared_norm(radial));
       const Vec3 out = r > 0.0 ? Vec3(radial / r) : Vec3(direction_.unitOrthogonal());
       t.gap = inside_ ? radius_ - r : r - radius_;
       t.normal = inside_ ? Vec3(-out) : out;

@@ -35,6 +35,18 @@ struct ContactStiffness {
   double rolling = 0.0;     // k_r [N m/rad]; zero for the constant-torque laws
 };
 
+// a.b and |a|^2 summed as (x + y) + z, the order of Eigen's SSE reduction, written out: the
+// pair loop's batches are built with Eigen's own SSE code off (its intrinsics stop the
+// vectoriser), and its plain reduction would sum x + (y + z), other bits than elsewhere.
+inline double dot(const Vec3& a, const Vec3& b) {
+  return (a.x() * b.x() + a.y() * b.y()) + a.z() * b.z();
+}
+inline double squared_norm(const Vec3& a) { return dot(a, a); }
+// a where c holds, else b, component by component: a select rather than a branch, so that a
+// law evaluated over a batch of contacts compiles to one vector loop.
+inline Vec3 select(bool c, const Vec3& a, const Vec3& b) {
+  return Vec3(c ? a.x() : b.x(), c ? a.y() : b.y(), c ? a.z() : b.z());
+}
 // Effective moduli of two bodies of the same material (particle-wall contacts use the P-W
 // parameter set for both sides): 1/E* = 2(1 - nu^2)/E, 1/G* = 2 (2 - nu)(1 + nu)/E (models.md 4.2).
 inline double effective_youngs_modulus(double youngs_modulus, double poisson_ratio) {

@@ -63,9 +63,15 @@ class ContactLaw {
       h.fill(0.0);
       return {};
     }
-    const NormalResponse n = normal_.respond(in, h.data() + kNormalOffset);
+    return evaluate_touching(in, h);
+  }
+  // The kernel of a contact known to be closed (overlap > 0), without a branch of its own (the
+  // pair loop's batches run it over many contacts as one vector loop). The responses are not
+  // const: g++ keeps a const local aggregate in memory, which stops the loop vectorising.
+  ContactOutput evaluate_touching(const ContactInput& in, History& h) const {
+    NormalResponse n = normal_.respond(in, h.data() + kNormalOffset);
     const double fn = Cohesion::normal_force(n.force);
-    const TangentialResponse t = tangential_.respond(in, fn, n, h.data() + kTangentialOffset);
+    TangentialResponse t = tangential_.respond(in, fn, n, h.data() + kTangentialOffset);
     const RollingLoad load = rolling_load(n, fn, t.stiffness);
     return {fn, t.force, rolling_.torque(in, load, h.data() + kRollingOffset)};
   }

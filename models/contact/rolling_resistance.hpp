@@ -48,15 +48,15 @@ class ConstantTorqueRolling {
 
   Vec3 torque(const ContactInput& in, const RollingLoad& load, double*) const {
     const Vec3& w = in.relative_angular_velocity;
-    const double w_norm = w.norm();
-    if (w_norm == 0.0) return Vec3::Zero();
-    const Vec3 w_t = w - w.dot(in.normal) * in.normal;
+    const double w_norm = std::sqrt(squared_norm(w));  // contact_kinematics.hpp
+    Vec3 w_t = w - dot(w, in.normal) * in.normal;
     double scale = mu_r_ * in.effective_radius * load.reference_force / w_norm;
     if constexpr (kClamped) {
       // |M| = scale |w_t| <= I_eff |w_t| / dt
       scale = std::min(scale, in.effective_inertia / in.dt);
     }
-    return -scale * w_t;
+    // No torque without rotation; a select rather than a branch (the batch loop vectorises).
+    return select(w_norm != 0.0, -scale * w_t, Vec3::Zero());
   }
   double spring_stiffness(const ContactInput&, const RollingLoad&) const { return 0.0; }
 
@@ -80,12 +80,12 @@ class RollingEpsd2 {
   Vec3 torque(const ContactInput& in, const RollingLoad& load, double* history) const {
     Eigen::Map<Vec3> m(history);
     const Vec3& w = in.relative_angular_velocity;
-    const Vec3 w_t = w - w.dot(in.normal) * in.normal;
+    const Vec3 w_t = w - dot(w, in.normal) * in.normal;
     const double kr = spring_stiffness(in, load);
     m -= kr * in.dt * w_t;
-    m -= m.dot(in.normal) * in.normal;  // stays in the contact plane as the contact turns [I]
+    m -= dot(m, in.normal) * in.normal;  // stays in the contact plane as the contact turns [I]
     const double cap = mu_r_ * in.effective_radius * std::abs(load.normal_force);
-    const double size = m.norm();
+    const double size = std::sqrt(squared_norm(m));
     if (size > cap) m *= cap / size;
     return m;
   }

@@ -82,16 +82,16 @@ class TangentialHistory {
     stiffness_(in, n, kt, gt);
     Eigen::Map<Vec3> xi(history);
     xi += in.tangential_velocity * in.dt;
-    xi -= xi.dot(in.normal) * in.normal;
-    Vec3 f = -kt * xi;
+    xi -= dot(xi, in.normal) * in.normal;
+    Vec3 spring = -kt * xi;  // not const (nor below): see ContactLaw::evaluate_touching
     const double cap = friction_ * std::abs(normal_force);
-    const double trial = kt * xi.norm();
-    if (trial > cap) {
-      f *= cap / trial;
-      xi = -f / kt;
-    } else {
-      f -= gt * in.tangential_velocity;
-    }
+    const double trial = kt * std::sqrt(squared_norm(xi));  // contact_kinematics.hpp
+    // Sliding scales the spring onto the cap and resets xi from it, sticking adds the dashpot;
+    // written as selects, without branches, so that a batch of contacts runs as one vector loop.
+    const bool sliding = trial > cap;
+    Vec3 slid = spring * (sliding ? cap / trial : 1.0);
+    Vec3 f = select(sliding, slid, spring - gt * in.tangential_velocity);
+    xi = select(sliding, -slid / kt, xi);
     return {f, kt};
   }
 

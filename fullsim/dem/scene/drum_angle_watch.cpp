@@ -44,6 +44,7 @@ std::optional<DrumSteadyResult> DrumAngleWatch::steady() const {
     r.state.over_top_fraction += x.state.over_top_fraction;
     r.state.solid_body_fraction += x.state.solid_body_fraction;
     r.state.shell_speed_ratio += x.state.shell_speed_ratio;
+    r.state.particles += x.state.particles;
     ++r.samples;
     if (!x.valid) continue;
     sum += x.angle;
@@ -57,6 +58,7 @@ std::optional<DrumSteadyResult> DrumAngleWatch::steady() const {
   r.state.over_top_fraction /= n;
   r.state.solid_body_fraction /= n;
   r.state.shell_speed_ratio /= n;
+  r.state.particles /= n;
   std::size_t valid = 0;
   for (const auto& x : samples_) valid += x.valid && x.time > r.from;
   if (valid > 0) {

@@ -1,5 +1,6 @@
 #include "fullsim/dem/scene/drum_bed_regime.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <numbers>
 
@@ -43,9 +44,11 @@ DrumRegimeCall classify_drum_bed(const DrumBedState& s, const DrumRegimeCriteria
     return {DrumBedRegime::slumping, text("%.0f %% of the bed turns with the shell between avalanches; the "
                                           "surface angle swings by %.1f deg", 100 * s.solid_body_fraction,
                                           s.angle_swing * deg)};
-  if (s.airborne_fraction >= c.cascading_airborne)
+  const double one_particle = s.particles > 0.0 ? 1.0 / s.particles : 0.0;
+  const double cascading_airborne = std::max(c.cascading_airborne, one_particle);
+  if (s.airborne_fraction >= cascading_airborne)
     return {DrumBedRegime::cascading, text("%.2f %% of the particles leave the surface in flight (threshold "
-                                           "%.2f %%)", 100 * s.airborne_fraction, 100 * c.cascading_airborne)};
+                                           "%.2f %%)", 100 * s.airborne_fraction, 100 * cascading_airborne)};
   if (s.surface_bulge >= c.cascading_bulge)
     return {DrumBedRegime::cascading, text("the surface bends by %.1f %% of R from its line (threshold "
                                            "%.1f %%)", 100 * s.surface_bulge, 100 * c.cascading_bulge)};

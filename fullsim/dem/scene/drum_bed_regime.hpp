@@ -36,13 +36,15 @@ struct DrumBedState {
   double over_top_fraction = 0.0;     // particles above 0.8 R (over the top of the drum) [-]
   double solid_body_fraction = 0.0;   // particles moving within 0.1 omega R of omega x r [-]
   double shell_speed_ratio = 1.0;     // mean tangential speed of the shell layer / shell speed [-]
+  double particles = 0.0;             // particles in the bed (the fractions' denominator) [-]
 };
 
 struct DrumRegimeCriteria {
   double centrifuging_solid_body = 0.8;   // and over_top_fraction above:
   double centrifuging_over_top = 0.08;
   double cataracting_airborne = 0.03;     // 3 % of the bed in flight
-  double cascading_airborne = 0.001;      // 0.1 %
+  double cascading_airborne = 0.001;      // 0.1 %, and at least one particle on average (a
+                                          // small bed's fraction below one particle is noise)
   double slipping_shell_speed = 0.5;      // the shell layer moves at less than half the shell
   double slumping_solid_body = 0.75;      // and the angle swinging peak-to-peak by more than:
   double slumping_swing = 0.09;           // [rad] (5 deg)

@@ -155,6 +155,7 @@ DrumSample DrumScene::sample() const {
     }
   }
   const double count = static_cast<double>(n);
+  s.state.particles = count;
   s.state.airborne_fraction = airborne / count;
   s.state.over_top_fraction = over_top / count;
   s.state.solid_body_fraction = omega != 0.0 ? solid / count : 0.0;

@@ -75,6 +75,17 @@ TEST(DrumBedRegime, ConstructedStatesGetTheirRegimes) {
   EXPECT_EQ(classify_drum_bed(state(0.03, 0.1, 0.0, 0.0, 0.0, 0.1)).regime, DrumBedRegime::slipping);
 }
 
+// In a small bed a fraction in flight below one particle is not taken for cascading: 0.12 % of
+// 771 particles (0.9 of a particle on average) stays rolling, the same fraction of 3 000 cascades.
+TEST(DrumBedRegime, FlightBelowOneParticleIsNotCascading) {
+  DrumBedState small = state(0.07, 0.2, 0.0012, 0.0, 0.3, 0.9);
+  small.particles = 771;
+  EXPECT_EQ(classify_drum_bed(small).regime, DrumBedRegime::rolling);
+  DrumBedState large = small;
+  large.particles = 3000;
+  EXPECT_EQ(classify_drum_bed(large).regime, DrumBedRegime::cascading);
+}
+
 // Reduced twin of the seed drum (D = 145 mm, 50 % fill, same Froude numbers): a periodic axial
 // slab 18 mm deep (the neighbour cutoff needs two cutoffs) of particles coarse-grained to
 // R = 3 mm (2x the seed's: d/D = 0.041 instead of 0.021, ~660 instead of ~70 000 particles),

@@ -1,0 +1,156 @@
+// The pair loop's vectorised batches (fullsim/dem/contact_batch.hpp) against the composed law
+// evaluated one contact at a time, and the AVX2 lanes against the generic ones.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "fullsim/dem/force_kernel.hpp"
+#include "models/contact/contact_law.hpp"
+#include "tests/support/pine_table2.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kRadius = 1.5e-3;
+
+// Isolated pairs of pine spheres on a grid of 10 R spacing, each touching with a random
+// overlap up to 0.15 R, random direction, velocities and spins (some spins zero). Between
+// `steps` calls of the kernel the positions stay put, so the history of each contact builds
+// up (sticking first, sliding later: the tangential spring grows by v_t dt per call).
+struct PairField {
+  ParticleStore particles;
+  SimulationBox box{Vec3::Constant(-0.01), Vec3::Constant(0.1), {false, false, false}};
+  NeighbourList list;
+  std::vector<Wall> walls;
+  std::vector<MeshWall> meshes;
+
+  PairField(std::size_t pairs, std::size_t history) : list(0.3 * kRadius, history) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (std::size_t k = 0; k < pairs; ++k) {
+      const Vec3 a = 10.0 * kRadius * Vec3(static_cast<double>(k % 5),
+                                           static_cast<double>(k / 5 % 5),
+                                           static_cast<double>(k / 25));
+      const Vec3 dir = Vec3(u(rng), u(rng), u(rng)).normalized();
+      const double overlap = 0.075 * kRadius * (1.0 + u(rng));
+      const Vec3 spin_i = k % 5 == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 30.0);
+      const Vec3 spin_j = k % 5 == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 30.0);
+      particles.add(a, kRadius, 390.0, 0.0, Vec3(u(rng), u(rng), u(rng)) * 0.5);
+      particles.add(a + (2.0 * kRadius - overlap) * dir, kRadius, 390.0, 0.0,
+                    Vec3(u(rng), u(rng), u(rng)) * 0.5);
+      particles.angular_velocity[2 * k] = spin_i;
+      particles.angular_velocity[2 * k + 1] = spin_j;
+    }
+    list.rebuild(particles, box);
+  }
+
+  // Forces and torques of `steps` kernel calls (the last one), in slot order.
+  std::vector<Vec3> run(ForceKernel& kernel, bool wide, int steps) {
+    DeepestOverlap pairs, at_walls;
+    double wall_seconds = 0.0;
+    for (int s = 0; s < steps; ++s) {
+      for (std::size_t i = 0; i < particles.size(); ++i) {
+        particles.force[i].setZero();
+        particles.torque[i].setZero();
+      }
+      ForceContext c{particles, list, box, walls, meshes, 0.0, 1e-5, false};
+      c.wide_lanes = wide;
+      kernel.add_contact_forces(c, pairs, at_walls, wall_seconds);
+    }
+    std::vector<Vec3> out = particles.force;
+    out.insert(out.end(), particles.torque.begin(), particles.torque.end());
+    return out;
+  }
+};
+
+std::vector<ContactLawChoice> compositions() {
+  return {{NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none},
+          {NormalLaw::hertz, TangentialLaw::history, RollingLaw::cdt_clamped, CohesionLaw::none},
+          {NormalLaw::hooke, TangentialLaw::history, RollingLaw::epsd2, CohesionLaw::none},
+          {NormalLaw::hysteretic_nonlinear2, TangentialLaw::history, RollingLaw::cdt,
+           CohesionLaw::none},
+          {NormalLaw::hysteretic_nonlinear1, TangentialLaw::mindlin, RollingLaw::none,
+           CohesionLaw::k_nc}};
+}
+
+DemParameters pine() {
+  DemParameters dem;
+  dem.particle = {kRadius, 390.0};
+  dem.particle_particle = testing::pine_table2_particle_particle();
+  dem.particle_wall = testing::pine_table2_particle_wall();
+  return dem;
+}
+
+// Each composition's batch gives every pair the force and torques of ContactLaw::evaluate
+// applied to that contact alone, over 40 calls (history growing from sticking into sliding).
+TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
+  for (const ContactLawChoice& choice : compositions()) {
+    const DemParameters dem = pine();
+    auto kernel = make_force_kernel(choice, dem);
+    PairField field(37, kernel->history_size());  // 37: one full batch of 32 and a part
+    const std::vector<Vec3> batched = field.run(*kernel, true, 40);
+    with_contact_law(choice, [&](auto tag) {
+      using Law = typename decltype(tag)::type;
+      const Law law(dem.particle_particle);
+      const ParticleStore& p = field.particles;
+      std::size_t sliding = 0;
+      for (std::size_t k = 0; k < p.size() / 2; ++k) {
+        const std::size_t i = 2 * k + 1, j = 2 * k;  // the list keeps a pair under one row
+        const Vec3 d = p.position[i] - p.position[j];
+        ContactInput in;
+        in.overlap = 2.0 * kRadius - d.norm();
+        in.normal = d.normalized();
+        const double ci = kRadius - 0.5 * in.overlap;
+        const Vec3 vr = p.velocity[i] - p.velocity[j];
+        in.normal_velocity = vr.dot(in.normal);
+        in.tangential_velocity = vr - in.normal_velocity * in.normal +
+                                 in.normal.cross(ci * (p.angular_velocity[i] + p.angular_velocity[j]));
+        in.relative_angular_velocity = p.angular_velocity[i] - p.angular_velocity[j];
+        in.effective_radius = 0.5 * kRadius;
+        in.effective_mass = 0.5 * p.mass[i];
+        in.effective_inertia = 0.5 * p.inertia[i];
+        in.dt = 1e-5;
+        typename Law::History h{};
+        ContactOutput out;
+        for (int s = 0; s < 40; ++s) out = law.evaluate(in, h);
+        const Vec3 f = out.normal_force * in.normal + out.tangential_force;
+        const Vec3 ti = out.rolling_torque - ci * in.normal.cross(out.tangential_force);
+        const double scale = f.norm() + 1e-30;
+        const std::size_t n = p.size();
+        EXPECT_LT((batched[i] - f).norm(), 1e-12 * scale) << Law::name() << " pair " << k;
+        EXPECT_LT((batched[j] + f).norm(), 1e-12 * scale) << Law::name() << " pair " << k;
+        EXPECT_LT((batched[n + i] - ti).norm(), 1e-12 * (ti.norm() + scale * kRadius))
+            << Law::name() << " pair " << k;
+        if constexpr (requires { law.tangential().friction(); }) {
+          const double cap = law.tangential().friction() * std::abs(out.normal_force);
+          if (cap > 0.0 && out.tangential_force.norm() > 0.999 * cap) ++sliding;
+        }
+      }
+      if (choice.tangential != TangentialLaw::none) {
+        EXPECT_GT(sliding, 0u) << Law::name() << ": some contacts must have reached the cap";
+      }
+    });
+  }
+}
+
+// The AVX2 lanes (where the processor has them) and the generic lanes give the same forces and
+// torques bit for bit, for every composition.
+TEST(ContactBatch, WideLanesGiveTheSameBitsAsTheGenericLanes) {
+  if (!wide_lanes_available()) GTEST_SKIP() << "no AVX2 on this processor";
+  for (const ContactLawChoice& choice : compositions()) {
+    const DemParameters dem = pine();
+    auto wide_kernel = make_force_kernel(choice, dem);
+    auto narrow_kernel = make_force_kernel(choice, dem);
+    PairField a(70, wide_kernel->history_size()), b(70, narrow_kernel->history_size());
+    const std::vector<Vec3> wide = a.run(*wide_kernel, true, 25);
+    const std::vector<Vec3> narrow = b.run(*narrow_kernel, false, 25);
+    ASSERT_EQ(wide.size(), narrow.size());
+    for (std::size_t k = 0; k < wide.size(); ++k) {
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(wide[k][c], narrow[k][c]) << wide_kernel->name();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace feedflow
