@@ -2,8 +2,8 @@
 // The pair and wall loops of one composed contact law, with the kinematics of models.md 4.1.
 // OpenMP without atomics: each thread owns a block of rows and writes the forces of its own
 // block only; reactions on bodies of other blocks are queued and applied by their owner after
-// a barrier, in thread order, so a run is deterministic for a given thread count. Wall contacts touch one particle each and write
-// directly.
+// a barrier, in thread order, so a run is deterministic for a given thread count. Wall
+// contacts (wall_contact_forces.hpp) touch one particle each and write directly.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -17,6 +17,7 @@
 
 #include "fullsim/dem/contact_batch.hpp"
 #include "fullsim/dem/force_kernel.hpp"
+#include "fullsim/dem/wall_contact_forces.hpp"
 
 namespace feedflow {
 
@@ -27,7 +28,7 @@ class LawForces final : public ForceKernel {
   static constexpr std::size_t kHistory = Law::kHistorySize;
 
   explicit LawForces(const DemParameters& dem)
-      : particle_particle_(dem.particle_particle), particle_wall_(dem.particle_wall) {}
+      : particle_particle_(dem.particle_particle), walls_(dem.particle_wall) {}
 
   std::string name() const override { return Law::name(); }
   std::size_t history_size() const override { return kHistory; }
@@ -162,7 +163,7 @@ class LawForces final : public ForceKernel {
           const double reach = ri + rj;
           const double r2 = squared_norm(d);  // contact_kinematics.hpp
           if (r2 >= reach * reach) {
-            clear(history + static_cast<std::size_t>(e) * kHistory);
+            clear_history<kHistory>(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
           const double r = std::sqrt(r2);
@@ -220,7 +221,7 @@ class LawForces final : public ForceKernel {
           }
       if (walls) {
         const auto start = std::chrono::steady_clock::now();
-        own_[tid].wall_worst = wall_rows(c, begin, end);
+        own_[tid].wall_worst = walls_.rows(c, begin, end);
         if (tid == 0)
           wall_seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -235,85 +236,6 @@ class LawForces final : public ForceKernel {
             (o.wall_worst.ratio == walls->ratio && o.wall_worst.slot < walls->slot))
           *walls = o.wall_worst;
     return result;
-  }
-
- private:
-  // The particle-wall contacts of the particles in slots [begin, end), each touching only its
-  // own particle (so a thread may run its own rows while another runs its own).
-  DeepestOverlap wall_rows(ForceContext& c, std::size_t begin, std::size_t end) {
-    ParticleStore& p = c.particles;
-    const std::size_t walls = c.walls.size();
-    const std::size_t meshes = c.meshes.size();
-    // Per particle: walls x history, then per mesh kMaxContacts slots of (normal, history);
-    // a slot's normal (zero when free) matches it to the same contact at the next step.
-    constexpr std::size_t kSlot = 3 + kHistory;
-    constexpr int kSlots = MeshWall::kMaxContacts;
-    const std::size_t stride = walls * kHistory + meshes * kSlots * kSlot;
-    double* history = p.wall_history.data();
-    DeepestOverlap worst;
-    for (std::size_t i = begin; i < end; ++i) {
-      const Vec3 xi = p.position[i];
-      const double ri = p.radius[i];
-      for (std::size_t k = 0; k < walls; ++k) {
-        const Wall& wall = c.walls[k];
-        double* h = history + i * stride + k * kHistory;
-        const WallTouch touch = wall.touch(xi);
-        const double overlap = ri - touch.gap;
-        if (!(overlap > 0.0) || !wall.active(c.time)) {
-          clear(h);
-          continue;
-        }
-        const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
-        const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
-                                                wall.angular_velocity(), c.dt, h);
-        if (ratio > worst.ratio) worst = {ratio, i, true};
-      }
-      for (std::size_t m = 0; m < meshes; ++m) {
-        const MeshWall& mesh = c.meshes[m];
-        double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
-        std::array<MeshTouch, kSlots> touch;
-        const int count = mesh.active(c.time) ? mesh.touches(xi, ri, touch) : 0;
-        // Each contact takes the slot whose stored normal is closest to its own (a contact
-        // sliding onto the next triangle keeps its history); the others start from zero.
-        std::array<int, kSlots> slot_of;
-        std::array<bool, kSlots> taken{};
-        for (int q = 0; q < count; ++q) {
-          slot_of[q] = -1;
-          double best = 0.8;  // within about 37 degrees
-          for (int s = 0; s < kSlots; ++s) {
-            if (taken[s]) continue;
-            const double* sn = slots + s * kSlot;
-            const double d = dot(touch[q].normal, Vec3(sn[0], sn[1], sn[2]));
-            if (d > best) {
-              best = d;
-              slot_of[q] = s;
-            }
-          }
-          if (slot_of[q] >= 0) taken[slot_of[q]] = true;
-        }
-        for (int s = 0; s < kSlots; ++s)
-          if (!taken[s]) clear_slot(slots + s * kSlot);
-        for (int q = 0; q < count; ++q) {
-          if (slot_of[q] < 0)
-            for (int s = 0; s < kSlots; ++s)
-              if (!taken[s]) {
-                taken[s] = true;
-                slot_of[q] = s;
-                break;
-              }
-          double* slot = slots + slot_of[q] * kSlot;
-          slot[0] = touch[q].normal.x();
-          slot[1] = touch[q].normal.y();
-          slot[2] = touch[q].normal.z();
-          const double ratio =
-              apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
-                                 mesh.surface_velocity(touch[q].point),
-                                 mesh.angular_velocity(), c.dt, slot + 3);
-          if (ratio > worst.ratio) worst = {ratio, i, true};
-        }
-      }
-    }
-    return worst;
   }
 
  private:
@@ -338,57 +260,8 @@ class LawForces final : public ForceKernel {
     return uniform_;
   }
 
-  // One particle-wall contact with the P-W set: adds its force and torque to particle i and
-  // returns the overlap over the radius.
-  double apply_wall_contact(ParticleStore& p, std::size_t i, double gap, const Vec3& normal,
-                            const Vec3& surface_velocity, const Vec3& wall_angular_velocity,
-                            double dt, double* h) {
-    const double ri = p.radius[i];
-    const double overlap = ri - gap;
-    ContactInput in;
-    in.overlap = overlap;
-    in.normal = normal;
-    const double ci = ri - overlap;
-    const Vec3 vr = p.velocity[i] - surface_velocity;
-    in.normal_velocity = dot(vr, in.normal);
-    in.tangential_velocity =
-        vr - in.normal_velocity * in.normal + in.normal.cross(ci * p.angular_velocity[i]);
-    in.relative_angular_velocity = p.angular_velocity[i] - wall_angular_velocity;
-    in.effective_radius = ri;
-    in.effective_mass = p.mass[i];
-    in.effective_inertia = p.inertia[i];
-    in.dt = dt;
-    History hist;
-    if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-    const ContactOutput out = particle_wall_.evaluate(in, hist);
-    if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
-    p.force[i] += out.normal_force * in.normal + out.tangential_force;
-    p.torque[i] += out.rolling_torque - ci * in.normal.cross(out.tangential_force);
-    return overlap / ri;
-  }
-  // Frees a mesh contact slot (normal and history).
-  static void clear_slot(double* s) {
-    for (std::size_t k = 0; k < 3 + kHistory; ++k)
-      if (s[k] != 0.0) {
-        std::fill(s, s + 3 + kHistory, 0.0);
-        return;
-      }
-  }
-
-  // Zeroes an open contact's history; reads first, so that the many open entries of a dense
-  // list are not written (and their cache lines not dirtied) every step.
-  static void clear(double* h) {
-    if constexpr (kHistory > 0) {
-      for (std::size_t k = 0; k < kHistory; ++k)
-        if (h[k] != 0.0) {
-          std::fill(h, h + kHistory, 0.0);
-          return;
-        }
-    }
-  }
-
   Law particle_particle_;
-  Law particle_wall_;
+  WallContactForces<Law> walls_;
   struct Reaction {
     std::uint32_t slot;  // the body of another thread's block
     Vec3 force;
