@@ -14,7 +14,6 @@
 namespace feedflow {
 namespace {
 
-constexpr const char* kModel = "CEL-FEM plane strain (G-B hypoplastic, donor-cell remap)";
 constexpr double kArchedShare = 0.02;       // of the scale rate rho W sqrt(g W)
 constexpr double kMassFlowSpeedRatio = 0.1;  // wall/centre speed above it: mass flow
 
@@ -22,6 +21,7 @@ constexpr double kMassFlowSpeedRatio = 0.1;  // wall/centre speed above it: mass
 
 SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
   const Case& c = request.case_data;
+  const std::string model_label = cel_model_label(c);
   const Hopper& hopper = std::get<Hopper>(c.equipment);
   if (!hopper.is_wedge())
     throw InputError(c.file, "hopper.shape",
@@ -64,29 +64,29 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
     const bool arched = final_per_metre < kArchedShare * scale;
     rec.results.emplace_back("mass_flow_rate",
                              Estimate{per_metre * slot, "kg/s", f * q.low * slot, f * q.high * slot,
-                                      std::string(kModel) + ", x slot length " +
+                                      model_label + ", x slot length " +
                                           format_quantity(slot, "m", 3),
                                       Rung::L2, ""});
     rec.results.emplace_back("mass_flow_rate_per_metre",
-                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high, kModel, Rung::L2, ""});
+                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high, model_label, Rung::L2, ""});
     rec.results.emplace_back("final_flow_rate_per_metre",
                              Estimate{final_per_metre, "kg/s/m", std::nullopt, std::nullopt,
                                       "slope over the last quarter of the run", Rung::L2, ""});
     rec.results.emplace_back("arching", Estimate{arched ? "arched" : "flows", "", std::nullopt,
-                                                 std::nullopt, kModel, Rung::L2, ""});
+                                                 std::nullopt, model_label, Rung::L2, ""});
     // Flow pattern from the velocity field at mid-height of the converging section.
     const double knee = (0.5 * hopper.bin_width - 0.5 * w) / std::tan(hopper.semi_angle);
     const double ratio = cel::wall_to_centre_speed_ratio(s, 0.5 * knee);
     const bool mass = ratio > kMassFlowSpeedRatio;
     rec.results.emplace_back("flow_pattern", Estimate{arched ? "none (arched)" : mass ? "mass" : "funnel",
-                                                      "", std::nullopt, std::nullopt, kModel, Rung::L2, ""});
+                                                      "", std::nullopt, std::nullopt, model_label, Rung::L2, ""});
     rec.results.emplace_back("wall_to_centre_speed_ratio",
                              Estimate{ratio, "", std::nullopt, std::nullopt,
                                       "node speeds at mid-height of the converging section, end of run",
                                       Rung::L2, ""});
     rec.results.emplace_back("discharged_mass",
                              Estimate{f * s.discharge().total() * slot, "kg", std::nullopt,
-                                      std::nullopt, kModel, Rung::L2, ""});
+                                      std::nullopt, model_label, Rung::L2, ""});
     const double lost = (s.total_mass() + s.discharge().total() + s.removed_mass()) /
                             run.initial_mass() - 1.0;
     rec.results.emplace_back("mass_balance_error",
