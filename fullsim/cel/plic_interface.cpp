@@ -45,9 +45,29 @@ CutRectangle cut_rectangle(double a, double b, const NodeVector& n, double fract
   const double corners[4] = {0.0, n.x() * a, n.y() * b, n.x() * a + n.y() * b};
   double lo = *std::min_element(corners, corners + 4), hi = *std::max_element(corners, corners + 4);
   const double target = std::clamp(fraction, 0.0, 1.0) * a * b;
-  for (int k = 0; k < 60 && hi - lo > 1e-15 * (std::abs(hi) + std::abs(lo) + a + b); ++k) {
-    const double mid = 0.5 * (lo + hi);
-    (clipped_area(0.0, a, b, n, mid) < target ? lo : hi) = mid;
+  // The cut area is monotone and piecewise quadratic in the offset: regula falsi with the
+  // Illinois modification keeps the bracket and converges superlinearly (about 6-10 area
+  // evaluations instead of 50 bisections).
+  double f_lo = -target, f_hi = a * b - target;
+  int side = 0;
+  const double tolerance = 1e-14 * a * b;
+  for (int k = 0; k < 100 && hi - lo > 1e-15 * (std::abs(hi) + std::abs(lo) + a + b); ++k) {
+    double mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+    const double f = clipped_area(0.0, a, b, n, mid) - target;
+    if (std::abs(f) <= tolerance) {
+      lo = hi = mid;
+      break;
+    }
+    if (f < 0.0) {
+      lo = mid, f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = mid, f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
   }
   cut.alpha = 0.5 * (lo + hi);
   return cut;

@@ -22,7 +22,8 @@ struct CutRectangle {
 };
 
 // The line with normal n that leaves `fraction` (0..1) of the rectangle [0, a] x [0, b] on its
-// material side (bisection on the offset; the cut area is monotone in it).
+// material side (to 1e-14 of the area; Illinois regula falsi on the offset, the cut area being
+// monotone in it).
 CutRectangle cut_rectangle(double a, double b, const NodeVector& n, double fraction);
 
 // Material area of the cut rectangle inside the slab x0 <= x <= x1 (0 <= x0 <= x1 <= a).
