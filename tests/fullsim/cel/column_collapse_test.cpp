@@ -1,18 +1,19 @@
 // Plane-strain granular column collapse against the published experimental runout scaling
 // (issue 7). Published (quasi-)2D laws, normalised runout (L_inf - L0)/L0 against a = H0/L0:
-//  - Lube, Huppert, Sparks & Freundt 2005, Phys. Rev. E 72, 041301 (2D channel): ~1.2 a for
-//    a < 1.8, ~1.9 a^(2/3) for a > 2.8 (as quoted in the issue; the text itself was not
-//    retrieved here);
-//  - Lajeunesse, Monnier & Homsy 2005, Phys. Fluids 17, 103302 (quasi-2D): linear ~1.2 a at
-//    small a, ~a^(2/3) above a ~ 3 (same caveat);
-//  - Staron & Hinch 2005, J. Fluid Mech. 545, 1-27 (2D contact-dynamics grains) reproduce the
-//    power law (abstract retrieved: "normalized runout distance has a power-law dependence on
-//    the aspect ratio a").
+//  - Lube, Huppert, Sparks & Freundt 2005, Phys. Rev. E 72, 041301 (2D channel): linear,
+//    ~1.2-1.6 a, below a ~ 2-3 and ~a^(2/3) above (the issue's summary); the coefficients used
+//    here, 1.2 a for a < 1.8 and 1.9 a^(2/3) for a > 2.8, are recalled from the paper, not read
+//    from it (its text was not found with the search tool);
+//  - Lajeunesse, Monnier & Homsy 2005, Phys. Fluids 17, 103302 (quasi-2D): ~1.2 a at small a,
+//    ~a^(2/3) above (the issue's summary, same caveat);
+//  - Staron & Hinch 2005, J. Fluid Mech. 545, 1-27 (2D contact-dynamics grains; abstract found:
+//    "the normalized runout distance has a power-law dependence on the aspect ratio a").
 // Our law is the Table 1 loblolly-pine set of the hypoplastic model (the issue's material; no
 // cohesionless sand set exists in models/hypoplastic). That set mobilises 56-73 deg in simple
 // shear at these pressures (fullsim/README.md), far above the 30-35 deg of the glass beads and
-// sands of the experiments, so the runout is expected shorter than the scaling; the tests bound
-// it from measured numbers and compare with 1.2 a within the stated tolerance only as a report.
+// sands of the experiments, so the runout is expected shorter than the scaling; the tests
+// compare it with min(1.2 a, 1.9 a^(2/3)) within stated tolerances (fast: 0.4 ... 1.5 times it,
+// LONG_: 0.5 ... 2 times it), measured 0.5-0.8 times it (fullsim/README.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
