@@ -5,6 +5,9 @@ namespace feedflow {
 namespace {
 constexpr std::string_view kNormalLaws[] = {"hysteretic_nonlinear2", "hysteretic_nonlinear1",
                                             "hertz", "hooke"};
+constexpr std::string_view kRemapOrders[] = {"first", "second", "second_stress",
+                                             "second_void_ratio", "second_density"};
+constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 }  // namespace
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
@@ -39,6 +42,16 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
                                "simulated time after the gravity phase"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                Range::positive(), "time between field snapshots"),
+      label_field<S>("remap_order", &S::remap_order, kRemapOrders,
+                     "advection of the cell state in the remap: first (donor cell, default), "
+                     "second (van Leer MUSCL on stress, void ratio and density), or second "
+                     "order on one quantity only (second_stress, second_void_ratio, "
+                     "second_density)",
+                     Presence::optional),
+      label_field<S>("material_flux", &S::material_flux, kMaterialFluxes,
+                     "material volume through the faces: donor_cell (default), limited (van "
+                     "Leer MUSCL volume fraction) or plic (Youngs interface in mixed cells)",
+                     Presence::optional),
   };
   return fields;
 }

@@ -22,6 +22,8 @@ struct CelCaseSettings {
   std::optional<double> cell_size;          // [m] edge of the square Eulerian cells
   std::optional<double> end_time;           // [s] simulated time after the gravity phase
   std::optional<double> snapshot_interval;  // [s] between HDF5 field snapshots
+  std::string remap_order;                  // empty: first; second; second_<quantity>
+  std::string material_flux;                // empty: donor_cell; limited; plic
 };
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields();

@@ -13,7 +13,6 @@
 namespace feedflow {
 namespace {
 
-constexpr const char* kModel = "CEL-FEM plane strain (G-B hypoplastic, donor-cell remap)";
 constexpr double kRestRatio = 1e-4;  // kinetic energy below this x its peak after the release
 constexpr int kKineticColumn = 1, kProbeColumn = 4;
 
@@ -31,6 +30,7 @@ double thickness_at(const cel::CelSolver& s, double x) {
 
 SimulationOutcome simulate_chute_with_cel(const SimulationRequest& request) {
   const Case& c = request.case_data;
+  const std::string model_label = cel_model_label(c);
   const Chute& chute = std::get<Chute>(c.equipment);
   const double h = cel_cell_size(c, 0.02);
   CelRunSetup setup;
@@ -81,7 +81,7 @@ SimulationOutcome simulate_chute_with_cel(const SimulationRequest& request) {
     rec.charts.push_back(chart);
     rec.results.emplace_back("deposit_thickness_mid_ramp",
                              Estimate{h_mid, "m", lo, hi,
-                                      std::string(kModel) + "; band over the middle fifth of the ramp",
+                                      model_label + "; band over the middle fifth of the ramp",
                                       Rung::L2, "mm"});
     rec.results.emplace_back("at_rest", Estimate{r.finished_early ? "yes" : "no (time limit)", "",
                                                  std::nullopt, std::nullopt,
@@ -93,7 +93,7 @@ SimulationOutcome simulate_chute_with_cel(const SimulationRequest& request) {
     const double m0 = run.initial_mass();
     rec.results.emplace_back("fraction_leaving_ramp",
                              Estimate{100.0 * s.discharge().total() / m0, "%", std::nullopt,
-                                      std::nullopt, kModel, Rung::L2, ""});
+                                      std::nullopt, model_label, Rung::L2, ""});
     if (!r.finished_early)
       verdict.note("the flow had not come to rest when the run ended: the deposit is an upper bound");
     if (c.design.max_stopping_thickness)

@@ -14,7 +14,6 @@
 namespace feedflow {
 namespace {
 
-constexpr const char* kModel = "CEL-FEM plane strain (G-B hypoplastic, donor-cell remap)";
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kSurfaceSpan = 0.5;  // the surface is fitted over |x - x_c| <= this x R
 
@@ -22,6 +21,7 @@ constexpr double kSurfaceSpan = 0.5;  // the surface is fitted over |x - x_c| <=
 
 SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request) {
   const Case& c = request.case_data;
+  const std::string model_label = cel_model_label(c);
   const Drum& drum = std::get<Drum>(c.equipment);
   const double phi_w = drum.wall_friction_angle.value_or(c.material.bulk.wall_friction_angle);
   const double h = cel_cell_size(c, 0.005);
@@ -71,7 +71,7 @@ SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request) {
       const double mean = sum / n, sd = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
       rec.results.emplace_back("dynamic_angle_of_repose",
                                Estimate{mean, "deg", mean - sd, mean + sd,
-                                        std::string(kModel) + ", time average +- 1 SD", Rung::L2, ""});
+                                        model_label + ", time average +- 1 SD", Rung::L2, ""});
       rec.results.emplace_back("angle_samples", Estimate{static_cast<double>(n), "", std::nullopt, std::nullopt,
                                                          "samples in the average", Rung::L2, ""});
       verdict.note("simulated dynamic angle of repose " + format_quantity(mean * kDeg, "deg", 3) +

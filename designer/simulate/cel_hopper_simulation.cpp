@@ -14,7 +14,6 @@
 namespace feedflow {
 namespace {
 
-constexpr const char* kModel = "CEL-FEM plane strain (G-B hypoplastic, donor-cell remap)";
 constexpr double kArchedShare = 0.02;       // of the scale rate rho W sqrt(g W)
 constexpr double kMassFlowSpeedRatio = 0.1;  // wall/centre speed above it: mass flow
 
@@ -22,6 +21,7 @@ constexpr double kMassFlowSpeedRatio = 0.1;  // wall/centre speed above it: mass
 
 SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
   const Case& c = request.case_data;
+  const std::string model_label = cel_model_label(c);
   const Hopper& hopper = std::get<Hopper>(c.equipment);
   if (!hopper.is_wedge())
     throw InputError(c.file, "hopper.shape",
@@ -64,29 +64,29 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
     const bool arched = final_per_metre < kArchedShare * scale;
     rec.results.emplace_back("mass_flow_rate",
                              Estimate{per_metre * slot, "kg/s", f * q.low * slot, f * q.high * slot,
-                                      std::string(kModel) + ", x slot length " +
+                                      model_label + ", x slot length " +
                                           format_quantity(slot, "m", 3),
                                       Rung::L2, ""});
     rec.results.emplace_back("mass_flow_rate_per_metre",
-                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high, kModel, Rung::L2, ""});
+                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high, model_label, Rung::L2, ""});
     rec.results.emplace_back("final_flow_rate_per_metre",
                              Estimate{final_per_metre, "kg/s/m", std::nullopt, std::nullopt,
                                       "slope over the last quarter of the run", Rung::L2, ""});
     rec.results.emplace_back("arching", Estimate{arched ? "arched" : "flows", "", std::nullopt,
-                                                 std::nullopt, kModel, Rung::L2, ""});
+                                                 std::nullopt, model_label, Rung::L2, ""});
     // Flow pattern from the velocity field at mid-height of the converging section.
     const double knee = (0.5 * hopper.bin_width - 0.5 * w) / std::tan(hopper.semi_angle);
     const double ratio = cel::wall_to_centre_speed_ratio(s, 0.5 * knee);
     const bool mass = ratio > kMassFlowSpeedRatio;
     rec.results.emplace_back("flow_pattern", Estimate{arched ? "none (arched)" : mass ? "mass" : "funnel",
-                                                      "", std::nullopt, std::nullopt, kModel, Rung::L2, ""});
+                                                      "", std::nullopt, std::nullopt, model_label, Rung::L2, ""});
     rec.results.emplace_back("wall_to_centre_speed_ratio",
                              Estimate{ratio, "", std::nullopt, std::nullopt,
                                       "node speeds at mid-height of the converging section, end of run",
                                       Rung::L2, ""});
     rec.results.emplace_back("discharged_mass",
                              Estimate{f * s.discharge().total() * slot, "kg", std::nullopt,
-                                      std::nullopt, kModel, Rung::L2, ""});
+                                      std::nullopt, model_label, Rung::L2, ""});
     const double lost = (s.total_mass() + s.discharge().total() + s.removed_mass()) /
                             run.initial_mass() - 1.0;
     rec.results.emplace_back("mass_balance_error",
@@ -128,8 +128,13 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
           (hopper.slot_length ? "" : " (assumed 1 m: the case gives no slot length)") +
           "; end walls of the slot are not modelled (errs high for short slots).",
       "Initial void ratio 0.7102 (seed deck) at the case's bulk density; initial stress -10 Pa I.",
-      "First-order donor-cell remap smears the free surface and the outlet jet; q_m from the "
-      "exact outflow ledger. Cut cells fill whole: up to half a cell of material behind the walls.",
+      "Remap: " + model_label.substr(model_label.find(", ") + 2, model_label.size() - model_label.find(", ") - 3) +
+          " ([cel] remap_order, material_flux; the donor cell smears the free surface and the "
+          "outlet jet); q_m from the exact outflow ledger. Cut cells fill whole: up to half a "
+          "cell of material behind the walls.",
+      "q_m depends on the cell size more than on the remap: pilot hopper 7.2 kg/s at 10 mm cells "
+      "(outlet 3 cells across the half slot, flow still accelerating at 3 s) against 6.2 kg/s at "
+      "5 mm (steady); second order moves it by < 3 % at either size (fullsim/README.md).",
       "Gravity phase with dynamic relaxation (damping switched off at the opening); not physical, "
       "it only brings the fill to rest faster.",
       "\"arched\": rate over the last quarter below 2 % of rho W sqrt(g W); flow pattern: mass flow "

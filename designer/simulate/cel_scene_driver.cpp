@@ -28,6 +28,43 @@ double cel_cell_size(const Case& c, double default_cell_size) {
   return c.cel.cell_size.value_or(default_cell_size);
 }
 
+namespace {
+cel::RemapOptions cel_remap_options(const Case& c) {
+  cel::RemapOptions o;
+  const std::string& order = c.cel.remap_order;
+  o.second_order_stress = order == "second" || order == "second_stress";
+  o.second_order_void_ratio = order == "second" || order == "second_void_ratio";
+  o.second_order_density = order == "second" || order == "second_density";
+  if (c.cel.material_flux == "limited") o.material_flux = cel::MaterialFlux::limited;
+  if (c.cel.material_flux == "plic") o.material_flux = cel::MaterialFlux::plic;
+  return o;
+}
+
+std::string remap_text(const cel::RemapOptions& o) {
+  std::string state = "first-order";
+  if (o.second_order_stress || o.second_order_void_ratio || o.second_order_density) {
+    state = "second-order (van Leer MUSCL:";
+    if (o.second_order_stress) state += " stress";
+    if (o.second_order_void_ratio) state += " void ratio";
+    if (o.second_order_density) state += " density";
+    state += ")";
+  }
+  const char* flux = o.material_flux == cel::MaterialFlux::plic      ? "PLIC (Youngs)"
+                     : o.material_flux == cel::MaterialFlux::limited ? "limited MUSCL"
+                                                                     : "donor-cell";
+  return state + " state, " + flux + " material flux";
+}
+}  // namespace
+
+std::string cel_model_label(const Case& c) {
+  const cel::RemapOptions o = cel_remap_options(c);
+  const bool second = o.second_order_stress || o.second_order_void_ratio || o.second_order_density;
+  std::string remap = second ? "second-order" : "donor-cell";
+  if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
+  if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";
+  return "CEL-FEM plane strain (G-B hypoplastic, " + remap + " remap)";
+}
+
 HypoplasticModel cel_material_model(const Case& c) {
   if (!c.material.hypoplastic)
     throw InputError(c.file, "material",
@@ -46,6 +83,7 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
   if (g.cell_count() > 4'000'000)
     throw InputError(c.file, "cel.cell_size", "gives " + std::to_string(g.cell_count()) +
                                                   " cells; choose a larger cell size");
+  setup.scene.options.remap = cel_remap_options(c);
   result.run = std::make_unique<cel::CelSceneRun>(setup.scene, setup.model);
   cel::CelSceneRun& run = *result.run;
   const auto checkpoint = request.out / "checkpoint.h5";
@@ -60,7 +98,8 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
     }
   }
   if (log) {
-    *log << "CEL-FEM plan (plane strain, hypoplastic G-B, first-order donor-cell remap, "
+    *log << "CEL-FEM plan (plane strain, hypoplastic G-B, remap: "
+         << remap_text(setup.scene.options.remap) << ", "
          << omp_get_max_threads() << " OpenMP thread(s)):\n";
     for (const auto& line : setup.scene.plan) *log << "  " << line << '\n';
     const auto& gp = setup.scene.gravity;

@@ -12,7 +12,7 @@ namespace feedflow::cel {
 
 CelSolver::CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model,
                      const CelOptions& options)
-    : grid_(grid), model_(model), options_(options), remap_(options.volume_fraction_cut) {
+    : grid_(grid), model_(model), options_(options), remap_(options.remap, options.volume_fraction_cut) {
   cells_.resize(grid_.cell_count());
   nodes_.resize(grid_.node_count());
   mark_wall_cells(grid_, place_walls(options_.rigid_walls, time_), cells_);

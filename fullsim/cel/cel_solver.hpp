@@ -11,7 +11,7 @@
 #include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
 #include "fullsim/cel/discharge_ledger.hpp"
-#include "fullsim/cel/donor_cell_remap.hpp"
+#include "fullsim/cel/remap_phase.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
 #include "fullsim/cel/rigid_wall.hpp"
 #include "fullsim/cel/stable_time_step.hpp"
@@ -27,6 +27,7 @@ struct CelOptions {
   BoxWalls walls{};
   std::vector<RigidWall> rigid_walls{};  // signed-distance walls with Coulomb friction
   WallContactOptions contact{};
+  RemapOptions remap{};  // advection order of the cell state, material flux (PLIC)
   NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
   // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic
@@ -124,7 +125,7 @@ class CelSolver {
   CelOptions options_;
   CellFields cells_;
   NodeFields nodes_;
-  DonorCellRemap remap_;
+  RemapPhase remap_;
   std::vector<std::size_t> active_;
   double void_node_mass_ = 0.0;
   double time_ = 0.0;

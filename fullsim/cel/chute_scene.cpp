@@ -46,7 +46,7 @@ CelScene make_chute_scene(const Chute& chute, const SceneMaterial& material, dou
                 kGateLiftSpeed, chute.gate_opening);
   s.plan.push_back(line);
   s.plan.push_back("skipped: ramp side walls and lateral spill (plane strain), vertical bin "
-                   "walls (normal to the ramp here), PLIC/second-order remap");
+                   "walls (normal to the ramp here)");
   return s;
 }
 

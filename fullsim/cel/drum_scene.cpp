@@ -65,7 +65,7 @@ CelScene make_drum_scene(const Drum& drum, double wall_friction_angle,
                 drum.fill_fraction * 100.0, level - (d.centre.y() - d.radius),
                 material.bulk_density, material.void_ratio);
   s.plan.push_back(line);
-  s.plan.push_back("skipped: end walls (plane strain), PLIC/second-order remap");
+  s.plan.push_back("skipped: end walls (plane strain)");
   return s;
 }
 

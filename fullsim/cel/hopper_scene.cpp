@@ -53,7 +53,7 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
   s.plan.push_back(line);
   s.plan.push_back("outlet: bottom box face (outflow, mass booked), closed by a gate wall "
                    "during the gravity phase; event: gate removed");
-  s.plan.push_back("skipped: second-order/PLIC remap (first-order donor cell), full-width "
+  s.plan.push_back("skipped: full-width "
                    "section (half slice), outlet inside the grid");
   return s;
 }

@@ -1,9 +1,13 @@
-#include "fullsim/cel/donor_cell_remap.hpp"
+#include "fullsim/cel/remap_phase.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "fullsim/cel/box_walls.hpp"
+#include "fullsim/cel/limited_slope.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/plic_interface.hpp"
 
 namespace feedflow::cel {
 namespace {
@@ -48,7 +52,7 @@ void zero(std::vector<T>& v, const T& z) {
 
 }  // namespace
 
-void DonorCellRemap::Contents::resize(std::size_t n) {
+void RemapPhase::Contents::resize(std::size_t n) {
   volume.assign(n, 0.0);
   material_volume.assign(n, 0.0);
   mass.assign(n, 0.0);
@@ -56,8 +60,64 @@ void DonorCellRemap::Contents::resize(std::size_t n) {
   stress_volume.assign(n, Eigen::Matrix3d::Zero());
 }
 
-DonorCellRemap::SweepResult DonorCellRemap::sweep(const PlaneStrainGrid& g, double dt, int axis,
-                                                  const CellFields& cells, const NodeFields& nodes) {
+RemapOptions second_order_state(RemapOptions o) {
+  o.second_order_stress = o.second_order_void_ratio = o.second_order_density = true;
+  return o;
+}
+
+void RemapPhase::refresh_cell_state(const PlaneStrainGrid& g, const CellFields& cells) {
+  const std::size_t n = g.cell_count();
+  vf_.resize(n);
+  rho_.resize(n);
+  e_.resize(n);
+  stress_.resize(n);
+  slope_cell_.resize(n);
+  for (std::size_t c = 0; c < n; ++c) {
+    const double vm = now_.material_volume[c];
+    const bool filled = vm > 0.0 && now_.mass[c] > 0.0 && now_.volume[c] > 0.0;
+    vf_[c] = filled ? vm / now_.volume[c] : 0.0;
+    rho_[c] = filled ? now_.mass[c] / vm : 0.0;
+    e_[c] = filled ? now_.void_mass[c] / now_.mass[c] : 0.0;
+    stress_[c] = filled ? Eigen::Matrix3d(now_.stress_volume[c] / vm) : Eigen::Matrix3d::Zero();
+    slope_cell_[c] = filled && !cells.solid[c] && vf_[c] > options_.slope_volume_fraction;
+  }
+}
+
+double RemapPhase::material_flux(const PlaneStrainGrid& g, const CellFields& cells, int axis,
+                                 std::size_t donor, double dv, double toward) const {
+  const double vm = now_.material_volume[donor];
+  if (vm <= 0.0) return 0.0;
+  const double volume = now_.volume[donor], vf = vf_[donor], slab = std::abs(dv);
+  const double donor_cell = vf * slab;
+  if (options_.material_flux == MaterialFlux::donor_cell || vf >= 1.0) return donor_cell;
+  const int i = g.cell_i(donor), j = g.cell_j(donor);
+  // Volume fraction of a neighbour; walls and cells beyond the box mirror the donor's.
+  const auto vf_at = [&](int di, int dj) {
+    const int ii = i + di, jj = j + dj;
+    if (ii < 0 || jj < 0 || ii >= g.nx || jj >= g.ny) return vf;
+    const std::size_t c = g.cell(ii, jj);
+    return cells.solid[c] ? vf : std::min(vf_[c], 1.0);
+  };
+  if (options_.material_flux == MaterialFlux::limited) {
+    const int di = axis == 0 ? 1 : 0, dj = 1 - di;
+    const double left = vf - vf_at(-di, -dj), right = vf_at(di, dj) - vf;
+    const double face = muscl_face_value(vf, van_leer_difference(left, right), slab / volume, toward);
+    return std::clamp(face * slab, 0.0, std::min(slab, vm));
+  }
+  std::array<double, 9> block{};
+  for (int dj = -1; dj <= 1; ++dj)
+    for (int di = -1; di <= 1; ++di) block[(di + 1) + 3 * (dj + 1)] = vf_at(di, dj);
+  const NodeVector n = youngs_normal(block);
+  if (n.isZero()) return donor_cell;
+  const double h = g.cell_size, along = volume / h;  // the intermediate cell as a rectangle
+  const CutRectangle cut = cut_rectangle(along, h, NodeVector(n[axis], n[1 - axis]), vf);
+  const double w = std::min(slab / h, along);
+  const double area = toward > 0.0 ? material_area(cut, along - w, along) : material_area(cut, 0.0, w);
+  return std::min(area, vm);
+}
+
+RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, int axis,
+                                          const CellFields& cells, const NodeFields& nodes) {
   const int n_along = axis == 0 ? g.nx : g.ny;
   const int n_across = axis == 0 ? g.ny : g.nx;
   zero(delta_.volume, 0.0);
@@ -66,13 +126,20 @@ DonorCellRemap::SweepResult DonorCellRemap::sweep(const PlaneStrainGrid& g, doub
   zero(delta_.void_mass, 0.0);
   zero(delta_.stress_volume, Eigen::Matrix3d::Zero().eval());
   face_mass_flux_.assign(static_cast<std::size_t>(n_across) * (n_along + 1), 0.0);
+  refresh_cell_state(g, cells);
   const int k_first = outflow_lo_[axis] ? 0 : 1;
   const int k_last = outflow_hi_[axis] ? n_along : n_along - 1;
+  const bool any_second_order = options_.second_order_stress || options_.second_order_void_ratio ||
+                                options_.second_order_density;
   double worst = 0.0, outflow = 0.0;
   // Lines across the sweep direction are independent: each touches its own cells only.
 #pragma omp parallel for schedule(static) reduction(max : worst) reduction(+ : outflow) \
     if (g.cell_count() > 8192)
   for (int m = 0; m < n_across; ++m) {
+    const auto cell_at = [&](int k) {
+      if (k < 0 || k >= n_along) return kOutside;
+      return axis == 0 ? g.cell(k, m) : g.cell(m, k);
+    };
     for (int k = k_first; k <= k_last; ++k) {
       const Face f = face(g, axis, k, m);
       const double dv = transport_volume(g, nodes, f, axis, dt, cells);
@@ -86,14 +153,34 @@ DonorCellRemap::SweepResult DonorCellRemap::sweep(const PlaneStrainGrid& g, doub
       if (donor == kOutside) continue;  // void enters through an outflow face
       const double share = std::abs(dv) / now_.volume[donor];
       worst = std::max(worst, share);
-      const double moved = dv > 0.0 ? share : -share;  // signed share, lo -> hi positive
-      const auto move = [&](auto& d, const auto& src) { exchange(d, (moved * src[donor]).eval()); };
-      exchange(delta_.material_volume, moved * now_.material_volume[donor]);
-      exchange(delta_.mass, moved * now_.mass[donor]);
-      exchange(delta_.void_mass, moved * now_.void_mass[donor]);
-      move(delta_.stress_volume, now_.stress_volume);
-      face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k] = moved * now_.mass[donor];
-      if (f.lo == kOutside || f.hi == kOutside) outflow += share * now_.mass[donor];
+      const double toward = dv > 0.0 ? 1.0 : -1.0;  // the face on the donor's high/low side
+      const double vm = material_flux(g, cells, axis, donor, dv, toward);
+      if (vm <= 0.0) continue;
+      double rho = rho_[donor], e = e_[donor];
+      Eigen::Matrix3d stress = stress_[donor];
+      if (any_second_order) {
+        const int kd = dv > 0.0 ? k - 1 : k;  // the donor's index along the axis
+        const std::size_t below = cell_at(kd - 1), above = cell_at(kd + 1);
+        if (below != kOutside && above != kOutside && slope_cell_[below] && slope_cell_[above] &&
+            slope_cell_[donor]) {
+          const auto face_value = [&](double d, double lo, double hi) {
+            return muscl_face_value(d, van_leer_difference(d - lo, hi - d), share, toward);
+          };
+          if (options_.second_order_density) rho = face_value(rho, rho_[below], rho_[above]);
+          if (options_.second_order_void_ratio) e = face_value(e, e_[below], e_[above]);
+          if (options_.second_order_stress)
+            for (int r = 0; r < 3; ++r)
+              for (int s = 0; s < 3; ++s)
+                stress(r, s) = face_value(stress(r, s), stress_[below](r, s), stress_[above](r, s));
+        }
+      }
+      const double dm = rho * vm;
+      exchange(delta_.material_volume, toward * vm);
+      exchange(delta_.mass, toward * dm);
+      exchange(delta_.void_mass, toward * e * dm);
+      exchange(delta_.stress_volume, (toward * vm * stress).eval());
+      face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k] = toward * dm;
+      if (f.lo == kOutside || f.hi == kOutside) outflow += dm;
     }
   }
   const std::size_t n = g.cell_count();
@@ -107,7 +194,7 @@ DonorCellRemap::SweepResult DonorCellRemap::sweep(const PlaneStrainGrid& g, doub
   return {worst, outflow};
 }
 
-NodeVector DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
+NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   const int n_along = axis == 0 ? g.nx : g.ny;    // cells along the axis
   const int n_across = axis == 0 ? g.ny : g.nx;   // cell lines
   zero(node_mass_delta_, 0.0);
@@ -158,7 +245,7 @@ NodeVector DonorCellRemap::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   return outflow;
 }
 
-RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, const BoxWalls& walls, double dt,
+RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, double dt,
                                   bool x_first, double void_node_mass, CellFields& cells,
                                   NodeFields& nodes) {
   outflow_lo_[0] = walls.left == WallCondition::outflow;
@@ -203,10 +290,16 @@ RemapReport DonorCellRemap::remap(const PlaneStrainGrid& g, const BoxWalls& wall
     report.outflow_momentum += sweep_momentum(g, axis);
   }
 
+  report.largest_volume_fraction = 0.0;
+  report.smallest_volume_fraction = 1.0;
   for (std::size_t c = 0; c < n; ++c) {
     const double vm = now_.material_volume[c];
     const double vf = vm / v0;
-    if (vf < cut_ || now_.mass[c] <= 0.0) {
+    if (!cells.solid[c]) {
+      report.largest_volume_fraction = std::max(report.largest_volume_fraction, vf);
+      report.smallest_volume_fraction = std::min(report.smallest_volume_fraction, vf);
+    }
+    if (vf < cut_ || vm <= 0.0 || now_.mass[c] <= 0.0) {
       report.removed_mass += now_.mass[c];
       cells.volume_fraction[c] = 0.0;
       cells.mass[c] = 0.0;

@@ -1,10 +1,14 @@
 #pragma once
-// The remap phase, first version (models.md 2.4): after the Lagrangian phase the cell contents
-// (material volume vf V^L, mass, stress x material volume, void ratio x mass, cell momentum) are
-// transported back to the fixed grid by first-order donor-cell fluxes, split into an x and a y
-// sweep whose order alternates every step. A face's transport volume is dt h times the mean
-// normal velocity of its two nodes; the donor (upwind) cell gives that fraction of its current
-// (intermediate) volume of every content. Every flux leaves one cell and enters its neighbour,
+// The remap phase (models.md 2.4): after the Lagrangian phase the cell contents (material volume
+// vf V^L, mass, stress x material volume, void ratio x mass, cell momentum) are transported back
+// to the fixed grid by face fluxes, split into an x and a y sweep whose order alternates every
+// step. A face's transport volume dV is dt h times the mean normal velocity of its two nodes;
+// the donor (upwind) cell gives a material volume dVm (RemapOptions::material_flux: donor cell
+// vf_D dV, a van Leer limited MUSCL face value of vf, or the PLIC cut of plic_interface), and
+// with it mass rho_f dVm, stress T_f dVm and void mass e_f rho_f dVm, where the face states are
+// the donor's (first order) or van Leer limited MUSCL face values (limited_slope.hpp; slopes
+// only between cells that both hold material, first order next to void, walls and box faces).
+// Every flux leaves one cell and enters its neighbour,
 // so mass, material volume and cell momentum are conserved to round-off; the faces of solid
 // cells carry no flux, nor do the box faces except outflow faces: there the boundary cell is the
 // donor of an outward flux (the mass and momentum leave the grid and are reported), an inward
@@ -16,6 +20,7 @@
 // from the remapped cells. Nodal momentum moves with these fluxes at the donor node's velocity
 // (donor cell): conservative, and the new velocity is a convex combination of old ones (no
 // overshoot at nodes that lose most of their mass).
+#include <cstdint>
 #include <vector>
 
 #include "fullsim/cel/box_walls.hpp"
@@ -23,18 +28,37 @@
 
 namespace feedflow::cel {
 
+// How the cell state and the material volume are advected. Defaults: first order everywhere
+// (the measured choice, see fullsim/README.md cel/).
+enum class MaterialFlux { donor_cell, limited, plic };
+struct RemapOptions {
+  // Second-order (van Leer MUSCL) face values per cell quantity; all false: donor cell.
+  bool second_order_stress = false;
+  bool second_order_void_ratio = false;
+  bool second_order_density = false;
+  MaterialFlux material_flux = MaterialFlux::donor_cell;
+  // A neighbour takes part in a slope only above this volume fraction.
+  double slope_volume_fraction = 1e-3;
+};
+// Second order for the whole cell state (stress, void ratio, density).
+RemapOptions second_order_state(RemapOptions o = {});
+
 struct RemapReport {
   double max_outflow_fraction = 0.0;  // largest share of a donor's volume given in one sweep
   double removed_mass = 0.0;          // in cells that fell below the volume-fraction cut [kg/m]
   NodeVector lost_momentum = NodeVector::Zero();  // on nodes that became void [kg m/s /m]
   double outflow_mass = 0.0;                          // through outflow faces [kg/m]
   NodeVector outflow_momentum = NodeVector::Zero();   // nodal, through outflow faces [kg m/s /m]
+  double largest_volume_fraction = 0.0;   // of the remapped cells before clipping to 1 [-]
+  double smallest_volume_fraction = 0.0;  // of the remapped cells, before the cut [-]
 };
 
-class DonorCellRemap {
+class RemapPhase {
  public:
   // Cells whose volume fraction falls below `volume_fraction_cut` are emptied (mass booked).
-  explicit DonorCellRemap(double volume_fraction_cut = 1e-12) : cut_(volume_fraction_cut) {}
+  explicit RemapPhase(const RemapOptions& options = {}, double volume_fraction_cut = 1e-12)
+      : options_(options), cut_(volume_fraction_cut) {}
+  const RemapOptions& options() const { return options_; }
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
   // constraints applied.
@@ -52,12 +76,23 @@ class DonorCellRemap {
   };
   SweepResult sweep(const PlaneStrainGrid& grid, double dt, int axis, const CellFields& cells,
                     const NodeFields& nodes);
+  void refresh_cell_state(const PlaneStrainGrid& grid, const CellFields& cells);
+  // Material volume given by `donor` through a face of transport volume |dv| on its `toward`
+  // side (+1 high, -1 low) along `axis`.
+  double material_flux(const PlaneStrainGrid& grid, const CellFields& cells, int axis,
+                       std::size_t donor, double dv, double toward) const;
   NodeVector sweep_momentum(const PlaneStrainGrid& grid, int axis);  // returns the outflow
 
+  RemapOptions options_;
   double cut_;
   bool outflow_lo_[kDimension] = {false, false};  // left, bottom
   bool outflow_hi_[kDimension] = {false, false};  // right, top
   Contents now_, delta_;
+  // Per cell at the start of a sweep: volume fraction, density, void ratio, stress, and whether
+  // the cell may enter a slope (material above the slope threshold, not solid).
+  std::vector<double> vf_, rho_, e_;
+  std::vector<Eigen::Matrix3d> stress_;
+  std::vector<std::uint8_t> slope_cell_;
   std::vector<double> face_mass_flux_;  // of the last sweep, per line (n_along + 1 faces) [kg/m]
   std::vector<double> node_mass_, node_mass_delta_;
   std::vector<NodeVector> node_momentum_, node_momentum_delta_;
