@@ -34,9 +34,9 @@ struct ContactBatch {
 
   // Runs `law` (a ContactLaw) on lanes [0, count), all of them touching pairs, with the vector
   // width of any x86-64 (two lanes); `evaluate_wide` is the same loop for AVX2 (four lanes),
-  // chosen at run time when the processor has it (`wide_lanes_available`, force_kernel.hpp). The two give the
-  // same results bit for bit: each lane's arithmetic is the scalar one, the translation unit is
-  // built without floating-point contraction (fullsim/CMakeLists.txt).
+  // chosen at run time when the processor has it (`wide_lanes_available`, force_kernel.hpp).
+  // The two give the same results bit for bit: each lane's arithmetic is the scalar one, and
+  // the translation unit is built without floating-point contraction (fullsim/CMakeLists.txt).
   template <class Law>
   [[gnu::noinline, gnu::flatten]] void evaluate(const Law& law, double dt) {
     lanes(law, dt);
