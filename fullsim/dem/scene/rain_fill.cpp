@@ -101,7 +101,10 @@ std::string RainFillSettings::describe() const {
   if (std::isfinite(target_mass)) s += format(", to %.4g kg", target_mass);
   if (target_count != std::numeric_limits<std::size_t>::max()) s += format(", to %zu spheres", target_count);
   s += format(", settled below %.3g mm/s (at most %.3g s)", settle_speed * 1e3, settle_time_cap);
-  if (trim_height) s += format(", centres above z = %.4g mm removed", *trim_height * 1e3);
+  // (a fill line at the drum's axis comes out as -4e-15 m from the cosine: printed as 0)
+  if (trim_height)
+    s += format(", centres above z = %.4g mm removed",
+                std::abs(*trim_height) < 1e-9 ? 0.0 : *trim_height * 1e3);
   return s;
 }
 
