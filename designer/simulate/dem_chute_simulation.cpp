@@ -55,18 +55,28 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
     throw InputError(c.file, "dem.slab_depth",
                      "the periodic slab must be at least two neighbour cutoffs deep (" +
                          fmt(2.0 * cutoff * 1e3) + " mm for R = " + fmt(r * 1e3) + " mm)");
+  std::unique_ptr<InclinedPlaneScene> scene =
+      request.restart.empty() ? std::make_unique<InclinedPlaneScene>(settings, spec) : nullptr;
   log << "inclined plane scene plan: periodic slab " << spec.slab_depth * 1e3 << " mm across the ramp "
       << "(stands for the " << chute.width * 1e3 << " mm ramp; no lateral spill), ramp frame with tilted "
-      << "gravity, bin on the ramp's upper end, gate plane removed on release with a plate kept above "
-      << chute.gate_opening * 1e3 << " mm, saw-tooth no-slip ramp (mesh), particles leaving the ramp end "
-      << "removed; ends when the kinetic energy shows the flow has stopped\n";
+      << "gravity, bin on the ramp's upper end filled by "
+      << (scene ? scene->rain().describe() + " (the fill height, normal to the ramp)"
+                : std::string("rain-fall (restart: the fill is skipped)"))
+      << ", gate plane removed on release with a plate kept above " << chute.gate_opening * 1e3
+      << " mm, saw-tooth no-slip ramp (mesh), particles leaving the ramp end removed; ends when the kinetic "
+         "energy shows the flow has stopped\n";
 
-  std::unique_ptr<InclinedPlaneScene> scene;
   long origin = 0;
   TimeSeries previous;
   if (request.restart.empty()) {
-    scene = std::make_unique<InclinedPlaneScene>(settings, spec);
-    scene->fill(log);
+    if (scene->fill(log).interrupted) {  // Ctrl-C while filling: nothing to continue from
+      SimulationOutcome out;
+      out.end = SimulationEnd::interrupted;
+      VerdictBuilder v;
+      v.note("interrupted while filling the bin: no checkpoint was written, run again");
+      out.record.verdict = v.verdict();
+      return out;
+    }
     scene->open_gate(log);
     origin = scene->engine().step();
   } else {
@@ -174,7 +184,17 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
   a.push_back("the bin stands on the upper end of the ramp with its walls normal to it (the seed gives no drawing)");
   a.push_back("no-slip ramp as a saw-tooth mesh (45 deg faces, period 2R, height R) standing for the glued chips; "
               "the deposit height is measured above the teeth's crests");
-  a.push_back("filling by a jittered-lattice packing settled against the closed gate, trimmed to the fill height");
+  if (request.restart.empty()) {
+    const FillReport& f = scene->fill_report();
+    a.push_back("filling by " + scene->rain().describe() + " (the fill height), against the closed gate: " +
+                fmt(f.inserted_count, 6) + " spheres rained in, " + fmt(f.trimmed_count, 6) + " trimmed" +
+                (f.settled ? ", settled (largest speed " + fmt(f.final_max_speed * 1e3) + " mm/s)"
+                           : ", NOT settled below the threshold within the time cap (largest speed " +
+                                 fmt(f.final_max_speed * 1e3) + " mm/s)"));
+  } else {
+    a.push_back("filling by rain-fall against the closed gate, settled and trimmed to the fill height (done by "
+                "the run the checkpoint continues)");
+  }
   return out;
 }
 

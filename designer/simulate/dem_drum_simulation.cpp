@@ -61,21 +61,27 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
   const double shell_friction = drum.wall_friction_angle ? std::tan(*drum.wall_friction_angle) : 0.364;
   if (spec.slab_depth) settings.material.particle_wall.friction = shell_friction;
 
+  std::unique_ptr<DrumScene> scene = request.restart.empty() ? std::make_unique<DrumScene>(settings, spec) : nullptr;
   log << "drum scene plan: " << (spec.slab_depth ? "periodic axial slab " + fmt(*spec.slab_depth * 1e3) +
                                                        " mm deep (no end walls; stands for the " +
                                                        fmt(drum.length * 1e3) + " mm drum)"
                                                  : "full 3D drum with turning end plates")
       << ", D = " << drum.diameter * 1e3 << " mm, fill " << drum.fill_fraction * 100 << " %, "
-      << drum.speed * 30.0 / std::numbers::pi << " rpm; analytic cylinder shell; filled by a "
-      << "random (jittered-lattice) packing settled and trimmed to the fill line; the shell starts "
-         "after settling; ends when the angle has converged\n";
+      << drum.speed * 30.0 / std::numbers::pi << " rpm; analytic cylinder shell; filled by "
+      << (scene ? scene->rain().describe() + " (the fill line)" : std::string("rain-fall (restart: the fill is skipped)"))
+      << "; the shell starts after settling; ends when the angle has converged\n";
 
-  std::unique_ptr<DrumScene> scene;
   long origin = 0;
   TimeSeries previous;
   if (request.restart.empty()) {
-    scene = std::make_unique<DrumScene>(settings, spec);
-    scene->fill(log);
+    if (scene->fill(log).interrupted) {  // Ctrl-C while filling: nothing to continue from
+      SimulationOutcome out;
+      out.end = SimulationEnd::interrupted;
+      VerdictBuilder v;
+      v.note("interrupted while filling the drum: no checkpoint was written, run again");
+      out.record.verdict = v.verdict();
+      return out;
+    }
     scene->start_rotation(log);
     origin = scene->engine().step();
   } else {
@@ -213,8 +219,17 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
                 "(no slip needs mu_w > (r_g/R) sin beta, about 0.24 here)");
   else
     a.push_back("full 3D drum with Table 2 P-W friction 0.2 on the shell and on the end plates turning with it");
-  a.push_back("filling by a jittered-lattice packing settled under gravity, not rain fall; the loose "
-              "packing errs towards a looser bed than the experiment's poured one");
+  if (request.restart.empty()) {
+    const FillReport& f = scene->fill_report();
+    a.push_back("filling by " + scene->rain().describe() + " (the fill line): " + fmt(f.inserted_count, 6) +
+                " spheres rained in, " + fmt(f.trimmed_count, 6) + " trimmed" +
+                (f.settled ? ", settled (largest speed " + fmt(f.final_max_speed * 1e3) + " mm/s)"
+                           : ", NOT settled below the threshold within the time cap (largest speed " +
+                                 fmt(f.final_max_speed * 1e3) + " mm/s)"));
+  } else {
+    a.push_back("filling by rain-fall, settled and trimmed to the fill line (done by the run the checkpoint "
+                "continues)");
+  }
   a.push_back("regime from the measured bed state (particles in flight, solid-body fraction, over-the-top "
               "fraction, surface bend, angle swing, shell slip; thresholds in fullsim/dem/scene/drum_bed_regime.hpp)");
   return out;

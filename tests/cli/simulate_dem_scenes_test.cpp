@@ -68,13 +68,13 @@ TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
   EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
 }
 
-// Restart on the inclined plane: a small plane (782 spheres, 120 mm bin, 50 mm gate) stopped
+// Restart on the inclined plane: a small plane (~700 rain-filled spheres, 100 x 80 mm fill, 50 mm gate) stopped
 // 0.15 s after the release and continued from its checkpoint to 0.3 s writes the same time series,
 // to the last digit, as an uninterrupted 0.3 s run, while the material is still running down the
 // ramp (the front moves), so the contact history in the checkpoint is exercised.
 TEST_F(SimulateDem, PlaneRestartContinuesTheSameSeries) {
   const std::string run = std::string("simulate cases/inclined_plane_29_5.toml --solver dem -q") + kTwin +
-                          " --set chute.bin_length=120mm --set chute.bin_height=0.2m --set chute.fill_height=0.1m"
+                          " --set chute.bin_length=100mm --set chute.bin_height=0.16m --set chute.fill_height=80mm"
                           " --set chute.length=0.4m --set chute.gate_opening=50mm";
   ASSERT_EQ(run_feedflow(run + " --time 0.3s --out whole", dir_).exit_code, 0);
   ASSERT_EQ(run_feedflow(run + " --time 0.15s --out first", dir_).exit_code, 0);

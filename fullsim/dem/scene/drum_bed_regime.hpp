@@ -16,9 +16,12 @@
 // On the coarse twin (R = 3 mm, 18 mm slab) the time-averaged surface bends by 10 to 14 % of R
 // at 10 rpm and 15 to 25 % at 50 rpm (runs differing only in the packing), so the shape alone
 // does not separate rolling from cascading reliably there; the particles in flight do (0.01 to
-// 0.05 % at 10 rpm, 0.30 % at 50 rpm). The criterion counts particles more than 3 radii above
-// the surface line, so it depends on the resolution: the seed-size slab at 20 rpm measured
-// 0.098 %, just under the threshold. Calibrate against a run of the size you use.
+// 0.05 % at 10 rpm, 0.30 % at 50 rpm with the former lattice fill; rain-filled: bend 15 % and
+// 0.026 % in flight at 10 rpm, bend 26 % and 0.13 % at 50 rpm). The criterion counts particles
+// more than 3 radii above the surface line, so it depends on the resolution and on the bed: the
+// seed-size 9 mm slab at 20 rpm measured 0.098 % lattice-filled (rolling, 41.0 deg) and 0.14 %
+// rain-filled (cascading, 43.3 deg; the seed labels 20 rpm rolling). Calibrate against a run
+// of the size you use.
 // The thresholds are stated in DrumRegimeCriteria (their defaults are the values used in the
 // tests on the seed's 10, 50 and 300 rpm labels).
 #include <string>

@@ -1,7 +1,7 @@
 #include "fullsim/dem/scene/drum_scene.hpp"
 
 #include <cmath>
-#include <random>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,7 +11,17 @@ namespace feedflow {
 
 namespace {
 
-constexpr double kLatticeGap = 1.04;  // lattice spacing / particle diameter
+// Rain-fall (rain_fill.hpp): the region's bottom rides kFollowGap radii above the resting fill
+// and is kRegionHeight radii tall, so a sphere drops at most ~10 R (15 mm for the seed's
+// spheres: ~0.7 m/s with the initial 0.5 m/s, soft enough for the hysteretic law); the rate
+// raises the bed by kRiseSpeed, which the region can feed without crowding (a 0.01 s batch
+// needs ~1 mm of bed, ~2 mm of the region's loose rain).
+constexpr double kFollowGap = 4.0;     // [R]
+constexpr double kRegionHeight = 6.0;  // [R]
+constexpr double kRainSpeed = 0.5;     // [m/s] initial downward speed of the rain
+constexpr double kRiseSpeed = 0.1;     // [m/s] of bed height
+constexpr double kPacking = 0.6;       // solid fraction the rate and the target assume
+constexpr double kSurplus = 1.2;       // rained mass / fill mass, so the trim leaves a level chord
 
 SimulationBox drum_box(const DrumSceneSpec& s, double r) {
   const double R = 0.5 * s.diameter + 2.0 * r;
@@ -29,35 +39,40 @@ DrumScene::DrumScene(DemSettings settings, DrumSceneSpec spec)
     throw std::invalid_argument("drum scene: the drum must be wider than 8 particle radii");
   if (spec_.slab_depth && *spec_.slab_depth < 4.0 * r)
     throw std::invalid_argument("drum scene: the periodic slab must be at least two particle diameters deep");
-  // Jittered lattice in the drum up to the fill line plus 0.6 R (the loose lattice, packing
-  // 0.47, settles to about 0.6; the surplus is trimmed after settling).
-  const double top = fill_line() + 0.6 * R;
-  const double depth = slab_depth();
-  const double a = kLatticeGap * 2.0 * r;
-  // Along a periodic axis the layers may touch (spacing >= 2R, no jitter in y): a 3-diameter
-  // slab holds 3 layers, not 2 at the x-z spacing.
-  const int ny = spec_.slab_depth ? std::max(2, static_cast<int>(std::floor(depth / (2.0 * r) + 1e-9)))
-                                  : static_cast<int>(std::floor((depth - 2.1 * r) / a)) + 1;
-  const double ay = spec_.slab_depth ? depth / ny : a;
-  const double y0 = spec_.slab_depth ? 0.5 * ay : r * 1.05;
-  std::mt19937 rng(spec_.seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  ParticleStore p;
-  const double rho = settings_.material.particle.density;
-  for (double z = -R + 1.05 * r; z <= top; z += a)
-    for (double x = -R + 1.05 * r; x <= R - r; x += a) {
-      if (std::hypot(x, z) > R - 1.1 * r) continue;
-      for (int j = 0; j < ny; ++j) {
-        const Vec3 jitter = 0.02 * r * Vec3(u(rng), 0.0, u(rng));
-        p.add(Vec3(x, y0 + j * ay, z) + jitter, r, rho, 0.0, 0.05 * Vec3(u(rng), u(rng), u(rng)));
-      }
-    }
-  engine_ = std::make_unique<DemEngine>(settings_, drum_box(spec_, r), std::move(p));
+  engine_ = std::make_unique<DemEngine>(settings_, drum_box(spec_, r), ParticleStore{});
   engine_->add_wall(Wall::cylinder("shell", Vec3::Zero(), Vec3::UnitY(), R, true));
   if (!spec_.slab_depth) {
     engine_->add_wall(Wall::plane("end wall y-", Vec3::Zero(), Vec3::UnitY()));
     engine_->add_wall(Wall::plane("end wall y+", Vec3(0, spec_.length, 0), -Vec3::UnitY()));
   }
+}
+
+RainFillSettings DrumScene::rain() const {
+  const double r = settings_.material.particle.radius;
+  const double R = 0.5 * spec_.diameter;
+  const double depth = slab_depth();
+  RainFillSettings s;
+  // Inside the drum from its bottom; across the whole periodic slab, or between the end walls.
+  s.region_lower = Vec3(-(R - r), spec_.slab_depth ? 0.0 : r, -R + r);
+  s.region_upper = Vec3(R - r, spec_.slab_depth ? depth : depth - r, -R + r + kRegionHeight * r);
+  s.follow_gap = kFollowGap * r;
+  s.radius = r;
+  s.density = settings_.material.particle.density;
+  const double fill_mass =
+      spec_.fill_fraction * std::numbers::pi * R * R * depth * s.density * kPacking;
+  const double bed_height = fill_line() + R;
+  s.mass_rate = fill_mass * kRiseSpeed / bed_height;
+  s.target_mass = kSurplus * fill_mass;
+  // Inserting also ends once the region would leave the drum (a fill fraction near 1).
+  s.target_height = R - (kFollowGap + 3.0) * r;
+  s.initial_velocity = Vec3(0.0, 0.0, -kRainSpeed);
+  s.insert_time_cap = 6.0 * kSurplus * bed_height / kRiseSpeed + 2.0;
+  s.settle_speed = spec_.settle_speed;
+  s.settle_time_cap = spec_.max_settle_time;
+  s.trim_height = fill_line();
+  s.seed = spec_.seed;
+  s.admits = [R](const Vec3& x, double radius) { return std::hypot(x.x(), x.z()) <= R - radius; };
+  return s;
 }
 
 DrumScene::DrumScene(DemSettings settings, DrumSceneSpec spec, DemCheckpoint checkpoint)
@@ -79,35 +94,14 @@ void DrumScene::rebuild(DemCheckpoint checkpoint) {
   engine_->prepare(quiet);
 }
 
-void DrumScene::settle(std::ostream& log, const char* phase) {
-  DemEngine& e = *engine_;
-  const double start = e.time();
-  const double chunk = 0.01;
-  while (e.time() - start < spec_.max_settle_time) {
-    e.run_until(e.time() + chunk);
-    if (e.time() - start >= 0.1 && e.max_speed() < spec_.settle_speed) break;
-  }
-  log << "drum: " << phase << " " << e.particles().size() << " particles, settled for "
-      << e.time() - start << " s, largest speed " << e.max_speed() << " m/s\n";
-}
-
-void DrumScene::fill(std::ostream& log) {
-  engine_->prepare(log);
-  settle(log, "packing fell:");
-  // Trim above the fill line: an outlet sink beyond the fill plane for one step.
-  DemCheckpoint c = engine_->checkpoint();
-  c.sink = OutletSink::plane(Vec3(0, 0, fill_line()), Vec3::UnitZ());
-  rebuild(std::move(c));
-  const std::size_t before = engine_->particles().size();
-  engine_->run_steps(1);
-  trimmed_ = before - engine_->particles().size();
-  if (trimmed_ == 0)
+const FillReport& DrumScene::fill(std::ostream& log) {
+  fill_report_ = rain_fill(*engine_, rain(), log);
+  if (fill_report_.interrupted) return fill_report_;
+  engine_->run_steps(1);  // the list rebuilt after the trim: the bed can be checkpointed
+  if (fill_report_.trimmed_count == 0)
     log << "drum: warning: the settled bed does not reach the fill line; the fill is below "
         << spec_.fill_fraction * 100 << " %\n";
-  DemCheckpoint trimmed = engine_->checkpoint();
-  trimmed.sink.reset();
-  rebuild(std::move(trimmed));
-  settle(log, "trimmed to the fill line:");
+  return fill_report_;
 }
 
 void DrumScene::start_rotation(std::ostream& log) {

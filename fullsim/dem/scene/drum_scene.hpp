@@ -2,11 +2,13 @@
 // The rotating-drum scene (seed section 3.3, data.md 4): a drum of diameter D turning about the
 // y axis (through the origin) as an analytic cylinder wall with the particle-wall set of Table 2;
 // full 3D with its two end walls (length L), or a periodic axial slab of `slab_depth` without
-// end walls (no end-wall friction: the angle comes out lower than in the full drum). Filled as
-// the seed did, by a random packing then gravity settling: a jittered lattice in the lower part
-// of the drum is let fall and settle until the largest speed is below `settle_speed`, the
-// particles above the fill line (the flat chord of the fill fraction f) are removed and the bed
-// settles again; then the shell starts turning at `speed` (the bed was filled at rest).
+// end walls (no end-wall friction: the angle comes out lower than in the full drum). Filled by
+// rain-fall with the scene kit (rain_fill.hpp, seed 3.1.1; the seed's drum used "a random
+// packing algorithm"): spheres dropped from a region inside the drum that rides a few radii
+// above the resting fill, at a rate that raises the bed by ~0.1 m/s, until 20 % more than the
+// fill's mass (packing 0.6) is in; settled until the largest speed is below `settle_speed`
+// (seed: 1 mm/s), the particles above the fill line (the flat chord of the fill fraction f)
+// removed; then the shell starts turning at `speed` (the bed was filled at rest).
 //
 //   DrumScene drum(settings, spec);
 //   drum.fill(log);
@@ -19,6 +21,7 @@
 #include "fullsim/dem/dem_engine.hpp"
 #include "fullsim/dem/scene/drum_bed_regime.hpp"
 #include "fullsim/dem/scene/drum_free_surface.hpp"
+#include "fullsim/dem/scene/rain_fill.hpp"
 
 namespace feedflow {
 
@@ -28,9 +31,9 @@ struct DrumSceneSpec {
   double fill_fraction = 0.5;           // of the cross-section [-]
   double speed = 0.0;                   // [rad/s], about +y
   std::optional<double> slab_depth;     // [m] periodic slab along the axis; none: full 3D
-  unsigned seed = 1;                    // of the lattice jitter
-  double settle_speed = 0.05;           // [m/s] settled when the largest speed is below
-  double max_settle_time = 3.0;         // [s] per settling phase
+  unsigned seed = 1;                    // of the rain's random positions
+  double settle_speed = 1e-3;           // [m/s] settled when the largest speed is below (seed)
+  double max_settle_time = 3.0;         // [s] of settling at most
 };
 
 // One measurement of the turning bed.
@@ -50,8 +53,12 @@ class DrumScene {
   // A run restored from a checkpoint of this scene (taken while turning or settling).
   DrumScene(DemSettings settings, DrumSceneSpec spec, DemCheckpoint checkpoint);
 
-  // Packing, settling, trimming to the fill line, settling (logs each phase).
-  void fill(std::ostream& log);
+  // The rain-fall settings of this drum (region inside the drum, following the fill; trim at
+  // the fill line).
+  RainFillSettings rain() const;
+  // Rain-fall, settling, trimming to the fill line (logs each phase). Returns the fill's
+  // report; `interrupted` when Ctrl-C stopped it (nothing to continue from).
+  const FillReport& fill(std::ostream& log);
   // The shell turns from now on; the sampling clock starts.
   void start_rotation(std::ostream& log);
 
@@ -65,19 +72,19 @@ class DrumScene {
   double fill_line() const;  // z of the flat fill chord [m]
   double slab_depth() const;  // periodic depth or the full length [m]
   bool is_slab() const { return spec_.slab_depth.has_value(); }
-  // Particles above the fill line removed after the first settling (0: the bed fell short of
-  // the fill line, the fill fraction is lower than asked).
-  std::size_t trimmed() const { return trimmed_; }
+  // Particles above the fill line removed after settling (0: the bed fell short of the fill
+  // line, the fill fraction is lower than asked).
+  std::size_t trimmed() const { return fill_report_.trimmed_count; }
+  const FillReport& fill_report() const { return fill_report_; }
 
  private:
-  void settle(std::ostream& log, const char* phase);
   void rebuild(DemCheckpoint checkpoint);
 
   DemSettings settings_;
   DrumSceneSpec spec_;
   std::unique_ptr<DemEngine> engine_;
   double rotation_start_ = 0.0;
-  std::size_t trimmed_ = 0;
+  FillReport fill_report_;
 };
 
 }  // namespace feedflow

@@ -1,7 +1,6 @@
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 
 #include <cmath>
-#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,6 +9,18 @@ namespace feedflow {
 namespace {
 
 constexpr double kG = 9.81;
+// Rain-fall (rain_fill.hpp): the region's bottom rides kFollowGap radii above the resting fill
+// and is kRegionHeight radii tall, and the spheres start normal to the ramp at kRainSpeed, so
+// they land after ~0.02 s having drifted down the slope by ~0.5 g sin(angle) t^2, about 1 mm
+// at 37 deg (falling along the tilted gravity they drifted ~16 mm for R = 3 mm, the heap leaned
+// on the gate and the back quarter of the bin stayed empty: measured). The rate raises the bed
+// by kRiseSpeed, which the region feeds without crowding.
+constexpr double kFollowGap = 2.0;     // [R]
+constexpr double kRegionHeight = 4.0;  // [R]
+constexpr double kRainSpeed = 0.5;     // [m/s] initial speed of the rain, normal to the ramp
+constexpr double kRiseSpeed = 0.1;     // [m/s] of bed height
+constexpr double kPacking = 0.6;       // solid fraction the rate and the target assume
+constexpr double kSurplus = 1.2;       // rained mass / fill mass, so the trim leaves a level bed
 
 SimulationBox plane_box(const InclinedPlaneSpec& s, double r) {
   return SimulationBox{Vec3(-s.bin_length - 2.0 * r, 0.0, -2.0 * r),
@@ -33,21 +44,7 @@ InclinedPlaneScene::InclinedPlaneScene(DemSettings settings, InclinedPlaneSpec s
   if (!(r > 0.0) || spec_.slab_depth < 4.0 * r || spec_.fill_height < 4.0 * r ||
       spec_.bin_length < 4.0 * r || spec_.gate_opening < 2.0 * r)
     throw std::invalid_argument("inclined plane: the slab, bin, fill and gate must hold a few particles");
-  const double a = 1.04 * 2.0 * r;
-  const int ny = std::max(2, static_cast<int>(std::floor(spec_.slab_depth / a)));
-  const double ay = spec_.slab_depth / ny;
-  const double top = std::min(1.3 * spec_.fill_height, spec_.bin_height - r);
-  std::mt19937 rng(spec_.seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  ParticleStore p;
-  const double rho = settings_.material.particle.density;
-  for (double z = 1.05 * r; z <= top; z += a)
-    for (double x = -spec_.bin_length + 1.05 * r; x <= -1.05 * r; x += a)
-      for (int j = 0; j < ny; ++j) {
-        const Vec3 jitter = 0.02 * r * Vec3(u(rng), u(rng), u(rng));
-        p.add(Vec3(x, (j + 0.5) * ay, z) + jitter, r, rho);
-      }
-  engine_ = std::make_unique<DemEngine>(settings_, plane_box(spec_, r), std::move(p));
+  engine_ = std::make_unique<DemEngine>(settings_, plane_box(spec_, r), ParticleStore{});
   engine_->add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
   engine_->add_wall(Wall::plane("bin back wall", Vec3(-spec_.bin_length, 0, 0), Vec3::UnitX()));
   engine_->add_wall(Wall::plane("gate", Vec3::Zero(), -Vec3::UnitX()));
@@ -90,25 +87,36 @@ void InclinedPlaneScene::rebuild(DemCheckpoint checkpoint) {
   engine_->prepare(quiet);
 }
 
-void InclinedPlaneScene::settle(std::ostream& log, const char* phase) {
-  DemEngine& e = *engine_;
-  const double start = e.time();
-  while (e.time() - start < spec_.max_settle_time) {
-    e.run_until(e.time() + 0.01);
-    if (e.time() - start >= 0.1 && e.max_speed() < spec_.settle_speed) break;
-  }
-  log << "inclined plane: " << phase << " " << e.particles().size() << " particles, settled for "
-      << e.time() - start << " s, largest speed " << e.max_speed() << " m/s\n";
+RainFillSettings InclinedPlaneScene::rain() const {
+  const double r = settings_.material.particle.radius;
+  const InclinedPlaneSpec& p = spec_;
+  RainFillSettings s;
+  s.region_lower = Vec3(-p.bin_length + r, 0.0, r);
+  s.region_upper = Vec3(-r, p.slab_depth, (1.0 + kRegionHeight) * r);
+  s.follow_gap = kFollowGap * r;
+  s.radius = r;
+  s.density = settings_.material.particle.density;
+  const double fill_mass = p.bin_length * p.fill_height * p.slab_depth * s.density * kPacking;
+  s.mass_rate = fill_mass * kRiseSpeed / p.fill_height;
+  s.target_mass = kSurplus * fill_mass;
+  // Inserting also ends once the region would rise out of the bin.
+  s.target_height = p.bin_height - (kFollowGap + 3.0) * r;
+  s.initial_velocity = Vec3(0.0, 0.0, -kRainSpeed);
+  s.insert_time_cap = 6.0 * kSurplus * p.fill_height / kRiseSpeed + 2.0;
+  s.settle_speed = p.settle_speed;
+  s.settle_time_cap = p.max_settle_time;
+  s.trim_height = p.fill_height;
+  s.seed = p.seed;
+  const double back = -p.bin_length, top = p.bin_height;
+  s.admits = [back, top](const Vec3& x, double radius) {
+    return x.x() >= back + radius && x.x() <= -radius && x.z() >= radius && x.z() <= top - radius;
+  };
+  return s;
 }
 
-void InclinedPlaneScene::fill(std::ostream& log) {
-  engine_->prepare(log);
-  settle(log, "packing fell:");
-  const ParticleStore& p = engine_->particles();
-  std::vector<char> above(p.size(), 0);
-  for (std::size_t i = 0; i < p.size(); ++i) above[i] = p.position[i].z() > spec_.fill_height;
-  engine_->remove_particles(above);
-  settle(log, "trimmed to the fill height:");
+const FillReport& InclinedPlaneScene::fill(std::ostream& log) {
+  fill_report_ = rain_fill(*engine_, rain(), log);
+  return fill_report_;
 }
 
 void InclinedPlaneScene::open_gate(std::ostream& log) {

@@ -13,13 +13,19 @@
 // a tangential/normal force ratio above tan(45 deg + atan 0.2) = 1.5, while the flow at 29.5 to
 // 37 deg drives at most tan 37 = 0.75; a high wall friction would also roughen the bin's walls
 // (one P-W set serves every wall). Particles leaving the ramp's end are removed (outlet sink).
-// Filling: a jittered lattice in the bin, settled against the closed gate under the tilted
-// gravity, trimmed above the fill height, settled again.
+// Filling by rain-fall with the scene kit (rain_fill.hpp), as the seed did (3.2.1: "the same
+// rainfall procedure as described in Section 3.1"): spheres shot normal to the ramp from a
+// region over the whole bin that rides a few radii above the resting fill (so the drift down
+// the slope while falling stays below a radius), at a rate raising the bed by ~0.1 m/s,
+// until 20 % more than the fill's mass (packing 0.6) is in; settled against the closed gate
+// until the largest speed is below `settle_speed` (seed: 1 mm/s); centres above the fill height
+// removed.
 #include <memory>
 #include <ostream>
 
 #include "fullsim/dem/dem_engine.hpp"
 #include "fullsim/dem/scene/deposit_profile.hpp"
+#include "fullsim/dem/scene/rain_fill.hpp"
 
 namespace feedflow {
 
@@ -31,9 +37,9 @@ struct InclinedPlaneSpec {
   double fill_height = 0.5;    // [m] normal to the ramp
   double gate_opening = 0.35;  // [m]
   double slab_depth = 0.015;   // [m] periodic, across the ramp
-  unsigned seed = 1;
-  double settle_speed = 0.05;     // [m/s]
-  double max_settle_time = 3.0;   // [s] per settling phase
+  unsigned seed = 1;               // of the rain's random positions
+  double settle_speed = 1e-3;     // [m/s] settled when the largest speed is below (seed)
+  double max_settle_time = 3.0;   // [s] of settling at most
 };
 
 class InclinedPlaneScene {
@@ -43,7 +49,13 @@ class InclinedPlaneScene {
   // A run restored from a checkpoint of this scene (the meshes are rebuilt from the spec).
   InclinedPlaneScene(DemSettings settings, InclinedPlaneSpec spec, DemCheckpoint checkpoint);
 
-  void fill(std::ostream& log);
+  // The rain-fall settings of this bin (region over the bin, following the fill; trim at the
+  // fill height).
+  RainFillSettings rain() const;
+  // Rain-fall, settling, trimming (logs each phase). Returns the fill's report; `interrupted`
+  // when Ctrl-C stopped it (nothing to continue from).
+  const FillReport& fill(std::ostream& log);
+  const FillReport& fill_report() const { return fill_report_; }
   void open_gate(std::ostream& log);  // the sampling clock starts
   // True once the kinetic energy per particle is below 1e-3 m g d (a particle of the bed moving
   // at about 1 % of sqrt(g d)): the flow has clearly stopped.
@@ -60,12 +72,12 @@ class InclinedPlaneScene {
  private:
   void add_meshes(DemEngine& engine) const;
   void rebuild(DemCheckpoint checkpoint);
-  void settle(std::ostream& log, const char* phase);
 
   DemSettings settings_;
   InclinedPlaneSpec spec_;
   std::unique_ptr<DemEngine> engine_;
   double release_time_ = 0.0;
+  FillReport fill_report_;
 };
 
 }  // namespace feedflow

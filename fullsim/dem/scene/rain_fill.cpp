@@ -93,6 +93,21 @@ bool overlaps_anything(const DemEngine& engine, const Vec3& x, double radius) {
          touches_wall(engine, x, radius);
 }
 
+std::string RainFillSettings::describe() const {
+  std::string s = format("rain-fall at %.3g kg/s from a %.3g mm tall region", mass_rate,
+                         (region_upper.z() - region_lower.z()) * 1e3);
+  if (follow_gap > 0.0) s += format(" riding %.3g mm above the resting fill", follow_gap * 1e3);
+  s += format(", spheres starting at %.3g m/s", initial_velocity.norm());
+  if (std::isfinite(target_mass)) s += format(", to %.4g kg", target_mass);
+  if (target_count != std::numeric_limits<std::size_t>::max()) s += format(", to %zu spheres", target_count);
+  s += format(", settled below %.3g mm/s (at most %.3g s)", settle_speed * 1e3, settle_time_cap);
+  // (a fill line at the drum's axis comes out as -4e-15 m from the cosine: printed as 0)
+  if (trim_height)
+    s += format(", centres above z = %.4g mm removed",
+                std::abs(*trim_height) < 1e-9 ? 0.0 : *trim_height * 1e3);
+  return s;
+}
+
 std::string FillReport::describe() const {
   std::string s = format("  fill: %zu spheres (%.6g kg) rained in by t = %.4g s%s; ",
                          inserted_count, inserted_mass, insert_end_time,

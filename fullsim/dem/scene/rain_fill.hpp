@@ -57,6 +57,10 @@ struct RainFillSettings {
   bool progress = false;             // a progress line (inserted mass, ETA) on a terminal
   // Whether a centre may receive a sphere (inside the container); none: everywhere.
   std::function<bool(const Vec3& centre, double radius)> admits;
+
+  // One plan line: "rain-fall at X kg/s from a region ..., to Y kg, settled below ..., trimmed
+  // above ..." (what a scene's plan says about its fill before it runs).
+  std::string describe() const;
 };
 
 struct FillReport {

@@ -52,6 +52,8 @@ DrumSteadyResult run_drum(double rpm, std::optional<double> slab, double wall_fr
 
 // The seed drum at the seed's particle size in a 9 mm periodic slab (shell friction 20 deg, the
 // FEM's): rolling at 10 rpm, cascading at 50, centrifuging at 300; the angle rises with speed.
+// Measured with the rain fill (3 030 spheres): 38.2 +- 2.8 deg rolling (0.018 % in flight),
+// 50.5 +- 1.9 deg cascading (0.64 %), centrifuging; 229 s wall on one core.
 TEST(DrumScene, LONG_SeedResolutionSlabRegimesAndAngleRise) {
   const auto slow = run_drum(10, 9e-3, std::tan(20 * kDeg));
   const auto fast = run_drum(50, 9e-3, std::tan(20 * kDeg));

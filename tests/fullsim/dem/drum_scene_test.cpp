@@ -3,6 +3,7 @@
 // centrifuging; data.md 4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <numbers>
@@ -88,7 +89,7 @@ TEST(DrumBedRegime, FlightBelowOneParticleIsNotCascading) {
 
 // Reduced twin of the seed drum (D = 145 mm, 50 % fill, same Froude numbers): a periodic axial
 // slab 18 mm deep (the neighbour cutoff needs two cutoffs) of particles coarse-grained to
-// R = 3 mm (2x the seed's: d/D = 0.041 instead of 0.021, ~660 instead of ~70 000 particles),
+// R = 3 mm (2x the seed's: d/D = 0.041 instead of 0.021, ~760 instead of ~70 000 particles),
 // Hertz + Mindlin + cdt with Table 2's E, nu, e, mu and mu_r (the seed's hysteretic law needs a
 // 20x smaller step). The slab has no turning end plates: its shell takes the case's wall
 // friction (20 deg) instead of Table 2's 0.2, with which the whole bed slips on the shell
@@ -103,17 +104,75 @@ DemSettings twin_settings() {
   return s;
 }
 
-// The twin filled and settled once per test process; each speed turns a copy of it.
-const DemCheckpoint& settled_twin() {
-  static const DemCheckpoint bed = [] {
+// The twin rain-filled and settled once per test process; each speed turns a copy of it.
+struct FilledTwin {
+  DemCheckpoint bed;
+  FillReport fill;
+  double fill_line = 0.0;  // [m]
+};
+
+const FilledTwin& filled_twin() {
+  static const FilledTwin twin = [] {
     DrumSceneSpec spec;
     spec.slab_depth = 18e-3;
     DrumScene drum(twin_settings(), spec);
     std::ostringstream log;
     drum.fill(log);
-    return drum.engine().checkpoint();
+    std::cerr << log.str();
+    return FilledTwin{drum.engine().checkpoint(), drum.fill_report(), drum.fill_line()};
   }();
-  return bed;
+  return twin;
+}
+
+const DemCheckpoint& settled_twin() { return filled_twin().bed; }
+
+// Deepest overlap of the bed, between particles (minimum image along the slab) and with the
+// shell of radius `shell` [m].
+double deepest_overlap(const DemCheckpoint& c, double shell) {
+  const ParticleStore& p = c.particles;
+  double deepest = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.position[i];
+    deepest = std::max(deepest, std::hypot(x.x(), x.z()) + p.radius[i] - shell);
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      deepest = std::max(deepest, p.radius[i] + p.radius[j] - c.box.minimum_image(x - p.position[j]).norm());
+  }
+  return deepest;
+}
+
+// The rain fill of the twin reaches the 50 % fill: it rained in more than the trim keeps (the
+// bed rose above the fill line), settled below the seed's 1 mm/s, and after the trim the surface
+// lies within a particle diameter below the fill line over the whole middle 80 % of the chord
+// (no hollow) with a bed packed at 0.5-0.65; no two spheres and no sphere and the shell overlap
+// by more than 5 % of R (a settled bed under its own weight, not a compressed placement).
+TEST(DrumTwin, RainFillReachesTheFillLineSettledWithoutOverlaps) {
+  const FilledTwin& t = filled_twin();
+  const double r = 3e-3, R = 0.0725;
+  EXPECT_TRUE(t.fill.target_reached);
+  EXPECT_TRUE(t.fill.settled);
+  EXPECT_LT(t.fill.final_max_speed, 1e-3);
+  EXPECT_GT(t.fill.trimmed_count, 10u);
+  EXPECT_EQ(t.fill.sunk_count, 0u);
+  const ParticleStore& p = t.bed.particles;
+  EXPECT_EQ(p.size() + t.fill.trimmed_count, t.fill.inserted_count);
+  std::vector<SurfacePoint> section;
+  for (const Vec3& x : p.position) section.push_back({x.x(), x.z()});
+  const auto surface = bed_surface_points(section, r, R);
+  int middle = 0;
+  for (const SurfacePoint& s : surface)
+    if (std::abs(s.x) < 0.8 * R) {
+      ++middle;
+      EXPECT_LE(s.z, t.fill_line + 1e-12) << "column at x = " << s.x;
+      EXPECT_GT(s.z, t.fill_line - 2.0 * r) << "column at x = " << s.x;
+    }
+  EXPECT_GT(middle, 15);
+  const double solid = static_cast<double>(p.size()) * 4.0 / 3.0 * std::numbers::pi * r * r * r /
+                       (0.5 * std::numbers::pi * R * R * 18e-3);
+  std::cerr << p.size() << " particles, solid fraction " << solid << ", deepest overlap "
+            << deepest_overlap(t.bed, R) / r << " R\n";
+  EXPECT_GT(solid, 0.5);
+  EXPECT_LT(solid, 0.65);
+  EXPECT_LT(deepest_overlap(t.bed, R), 0.05 * r);
 }
 
 DrumSteadyResult run_twin(double rpm) {
