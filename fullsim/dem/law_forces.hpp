@@ -132,14 +132,10 @@ class LawForces final : public ForceKernel {
           }
           double* h = history + static_cast<std::size_t>(b.entry[k]) * kHistory;
           for (std::size_t q = 0; q < kHistory; ++q) h[q] = b.history[q][k];
-          const Vec3 normal(b.nx[k], b.ny[k], b.nz[k]);
-          const Vec3 tangential(b.ftx[k], b.fty[k], b.ftz[k]);
-          const Vec3 rolling(b.mx[k], b.my[k], b.mz[k]);
-          const Vec3 f = b.fn[k] * normal + tangential;
-          const Vec3 lever = normal.cross(tangential);
+          const Vec3 f(b.fx[k], b.fy[k], b.fz[k]);
+          const Vec3 tj(b.tjx[k], b.tjy[k], b.tjz[k]);
           fi += f;
-          ti += rolling - b.ci[k] * lever;
-          const Vec3 tj = -(rolling + b.cj[k] * lever);
+          ti += Vec3(b.tix[k], b.tiy[k], b.tiz[k]);
           const std::size_t j = b.j[k];
           if (j >= begin && j < end) {
             force[j] -= f;
@@ -166,32 +162,11 @@ class LawForces final : public ForceKernel {
             clear_history<kHistory>(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
-          const double r = std::sqrt(r2);
           const std::size_t k = b.count;
           b.i[k] = static_cast<std::uint32_t>(i);
           b.j[k] = static_cast<std::uint32_t>(j);
           b.entry[k] = e;
-          const double overlap = reach - r;
-          const Vec3 normal = d * (1.0 / r);
-          const double ci = ri - 0.5 * overlap;
-          const double cj = rj - 0.5 * overlap;
-          const Vec3 vr = v[i] - v[j];
-          const double vn = dot(vr, normal);
-          const Vec3 vt = vr - vn * normal + normal.cross(ci * w[i] + cj * w[j]);
-          const Vec3 wr = w[i] - w[j];
-          b.overlap[k] = overlap;
-          b.nx[k] = normal.x();
-          b.ny[k] = normal.y();
-          b.nz[k] = normal.z();
-          b.vn[k] = vn;
-          b.vtx[k] = vt.x();
-          b.vty[k] = vt.y();
-          b.vtz[k] = vt.z();
-          b.wx[k] = wr.x();
-          b.wy[k] = wr.y();
-          b.wz[k] = wr.z();
-          b.ci[k] = ci;
-          b.cj[k] = cj;
+          b.set_pair(k, d, r2, ri, rj, v[i] - v[j], w[i], w[j]);
           if (uniform.yes) {
             b.radius[k] = uniform.radius;
             b.mass[k] = uniform.mass;
