@@ -56,8 +56,9 @@ struct ContactBatch {
   }
 
   // Runs `law` (a ContactLaw) on lanes [0, count), all of them touching pairs, with the vector
-  // width of any x86-64 (two lanes); `evaluate_wide` is the same loop for AVX2 (four lanes),
-  // chosen at run time when the processor has it (`wide_lanes_available`, force_kernel.hpp).
+  // width of any x86-64 (two lanes); `evaluate_avx2` (four lanes) and `evaluate_avx512` (eight)
+  // are the same loop, chosen at run time by what the processor has (`lane_bits_available`,
+  // force_kernel.hpp).
   // The two give the same results bit for bit: each lane's arithmetic is the scalar one, and
   // the translation unit is built without floating-point contraction (fullsim/CMakeLists.txt).
   template <class Law>
@@ -66,8 +67,13 @@ struct ContactBatch {
   }
 #if defined(__x86_64__)
   template <class Law>
-  [[gnu::noinline, gnu::flatten, gnu::target("avx2,fma")]] void evaluate_wide(const Law& law,
+  [[gnu::noinline, gnu::flatten, gnu::target("avx2,fma")]] void evaluate_avx2(const Law& law,
                                                                              double dt) {
+    lanes(law, dt);
+  }
+  template <class Law>
+  [[gnu::noinline, gnu::flatten, gnu::target("avx512f,avx512vl,avx512dq,avx2,fma")]] void
+  evaluate_avx512(const Law& law, double dt) {
     lanes(law, dt);
   }
 #endif

@@ -4,12 +4,17 @@
 
 namespace feedflow {
 
-bool wide_lanes_available() {
+int lane_bits_available() {
 #if defined(__x86_64__)
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
+  static const int bits = [] {
+    const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    const bool avx512 = avx2 && __builtin_cpu_supports("avx512f") &&
+                        __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
+    return avx512 ? 512 : avx2 ? 256 : 128;
+  }();
+  return bits;
 #else
-  return false;
+  return 128;
 #endif
 }
 

@@ -27,11 +27,12 @@ struct ForceContext {
   double time = 0.0;  // [s]
   double dt = 0.0;    // [s]
   bool parallel = true;  // run the loops on the OpenMP threads (off for small systems)
-  bool wide_lanes = true;  // the AVX2 lanes of the pair loop where the processor has them
+  int max_lane_bits = 512;  // widest vector lanes of the pair loop to use, where available
 };
 
-// Whether this processor runs the pair loop's AVX2 lanes (AVX2 and FMA); looked up once.
-bool wide_lanes_available();
+// The widest vector lanes of the pair loop this processor runs: 512 (AVX-512 F, VL, DQ), 256
+// (AVX2 and FMA) or 128 (any x86-64); looked up once. All give the same bits.
+int lane_bits_available();
 
 // The deepest contact seen by a loop: overlap over the smaller radius.
 struct DeepestOverlap {

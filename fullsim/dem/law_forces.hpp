@@ -94,7 +94,7 @@ class LawForces final : public ForceKernel {
     // here by the very same expressions, so the results stay bit for bit those of the general
     // loop, without three divisions per contact.
     const UniformBodies uniform = uniform_bodies(p, c.neighbours.rebuild_count());
-    const bool wide = c.wide_lanes && wide_lanes_available();
+    const int lane_bits = std::min(c.max_lane_bits, lane_bits_available());
 
 #pragma omp parallel num_threads(threads) if (threads > 1)
     {
@@ -117,7 +117,8 @@ class LawForces final : public ForceKernel {
       Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
       auto run_batch = [&]() {
 #if defined(__x86_64__)
-        if (wide) b.evaluate_wide(particle_particle_, dt);
+        if (lane_bits >= 512) b.evaluate_avx512(particle_particle_, dt);
+        else if (lane_bits >= 256) b.evaluate_avx2(particle_particle_, dt);
         else b.evaluate(particle_particle_, dt);
 #else
         b.evaluate(particle_particle_, dt);

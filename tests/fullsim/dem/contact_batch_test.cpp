@@ -46,7 +46,7 @@ struct PairField {
   }
 
   // Forces and torques of `steps` kernel calls (the last one), in slot order.
-  std::vector<Vec3> run(ForceKernel& kernel, bool wide, int steps) {
+  std::vector<Vec3> run(ForceKernel& kernel, int lane_bits, int steps) {
     DeepestOverlap pairs, at_walls;
     double wall_seconds = 0.0;
     for (int s = 0; s < steps; ++s) {
@@ -55,7 +55,7 @@ struct PairField {
         particles.torque[i].setZero();
       }
       ForceContext c{particles, list, box, walls, meshes, 0.0, 1e-5, false};
-      c.wide_lanes = wide;
+      c.max_lane_bits = lane_bits;
       kernel.add_contact_forces(c, pairs, at_walls, wall_seconds);
     }
     std::vector<Vec3> out = particles.force;
@@ -89,7 +89,7 @@ TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
     const DemParameters dem = pine();
     auto kernel = make_force_kernel(choice, dem);
     PairField field(37, kernel->history_size());  // 37: one full batch of 32 and a part
-    const std::vector<Vec3> batched = field.run(*kernel, true, 40);
+    const std::vector<Vec3> batched = field.run(*kernel, 512, 40);
     with_contact_law(choice, [&](auto tag) {
       using Law = typename decltype(tag)::type;
       const Law law(dem.particle_particle);
@@ -134,20 +134,25 @@ TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
   }
 }
 
-// The AVX2 lanes (where the processor has them) and the generic lanes give the same forces and
-// torques bit for bit, for every composition.
+// The AVX-512 and AVX2 lanes (where the processor has them) and the generic lanes give the same
+// forces and torques bit for bit, for every composition.
 TEST(ContactBatch, WideLanesGiveTheSameBitsAsTheGenericLanes) {
-  if (!wide_lanes_available()) GTEST_SKIP() << "no AVX2 on this processor";
+  if (lane_bits_available() < 256) GTEST_SKIP() << "no AVX2 on this processor";
   for (const ContactLawChoice& choice : compositions()) {
     const DemParameters dem = pine();
-    auto wide_kernel = make_force_kernel(choice, dem);
-    auto narrow_kernel = make_force_kernel(choice, dem);
-    PairField a(70, wide_kernel->history_size()), b(70, narrow_kernel->history_size());
-    const std::vector<Vec3> wide = a.run(*wide_kernel, true, 25);
-    const std::vector<Vec3> narrow = b.run(*narrow_kernel, false, 25);
-    ASSERT_EQ(wide.size(), narrow.size());
-    for (std::size_t k = 0; k < wide.size(); ++k) {
-      for (int c = 0; c < 3; ++c) EXPECT_EQ(wide[k][c], narrow[k][c]) << wide_kernel->name();
+    std::vector<std::vector<Vec3>> runs;
+    std::string name;
+    for (int bits = 128; bits <= lane_bits_available(); bits *= 2) {
+      auto kernel = make_force_kernel(choice, dem);
+      name = kernel->name();
+      PairField field(70, kernel->history_size());
+      runs.push_back(field.run(*kernel, bits, 25));
+    }
+    for (std::size_t r = 1; r < runs.size(); ++r) {
+      ASSERT_EQ(runs[r].size(), runs[0].size());
+      for (std::size_t k = 0; k < runs[0].size(); ++k) {
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(runs[r][k][c], runs[0][k][c]) << name << " lanes " << r;
+      }
     }
   }
 }
