@@ -69,14 +69,7 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
   long origin = 0;
   TimeSeries previous;
   if (request.restart.empty()) {
-    if (scene->fill(log).interrupted) {  // Ctrl-C while filling: nothing to continue from
-      SimulationOutcome out;
-      out.end = SimulationEnd::interrupted;
-      VerdictBuilder v;
-      v.note("interrupted while filling the bin: no checkpoint was written, run again");
-      out.record.verdict = v.verdict();
-      return out;
-    }
+    if (scene->fill(log).interrupted) return interrupted_while_filling("the bin");
     scene->open_gate(log);
     origin = scene->engine().step();
   } else {

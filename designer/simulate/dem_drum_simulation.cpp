@@ -74,14 +74,7 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
   long origin = 0;
   TimeSeries previous;
   if (request.restart.empty()) {
-    if (scene->fill(log).interrupted) {  // Ctrl-C while filling: nothing to continue from
-      SimulationOutcome out;
-      out.end = SimulationEnd::interrupted;
-      VerdictBuilder v;
-      v.note("interrupted while filling the drum: no checkpoint was written, run again");
-      out.record.verdict = v.verdict();
-      return out;
-    }
+    if (scene->fill(log).interrupted) return interrupted_while_filling("the drum");
     scene->start_rotation(log);
     origin = scene->engine().step();
   } else {

@@ -74,14 +74,8 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
   std::ostream& log = request.log ? *request.log : discard;
   DemHopperScene scene = hopper_scene_from_case(c);
   std::optional<DemEngine> prepared = prepare_hopper_scene(scene, request, log);
+  if (!prepared) return interrupted_while_filling("the hopper");
   SimulationOutcome outcome;
-  if (!prepared) {  // Ctrl-C while filling: no checkpoint (a restart would skip the fill)
-    outcome.end = SimulationEnd::interrupted;
-    VerdictBuilder v;
-    v.note("interrupted while filling the hopper: no checkpoint was written, run again");
-    outcome.record.verdict = v.verdict();
-    return outcome;
-  }
   DemEngine& engine = *prepared;
   const ArchCriterion arch;
 

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "designer/design/verdict_builder.hpp"
 #include "fullsim/common/interrupt_request.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
@@ -129,6 +130,15 @@ DemSceneResult run_dem_scene(DemEngine& engine, const SimulationRequest& request
     log << "run: ended at t = " << engine.time() << " s: " << result.stop_reason << '\n';
   log << engine.performance_report();
   return result;
+}
+
+SimulationOutcome interrupted_while_filling(const std::string& what) {
+  SimulationOutcome out;
+  out.end = SimulationEnd::interrupted;
+  VerdictBuilder v;
+  v.note("interrupted while filling " + what + ": no checkpoint was written, run again");
+  out.record.verdict = v.verdict();
+  return out;
 }
 
 }  // namespace feedflow

@@ -53,6 +53,10 @@ DemSceneResult run_dem_scene(DemEngine& engine, const SimulationRequest& request
 // The time series saved in a checkpoint's /scene group (empty rows when there is none).
 TimeSeries read_scene_series(const Hdf5File& checkpoint, std::vector<TimeSeriesColumn> columns);
 
+// The outcome of a run stopped by Ctrl-C while filling `what` ("the drum"): no checkpoint (a
+// restart would skip the fill), a verdict that says so.
+SimulationOutcome interrupted_while_filling(const std::string& what);
+
 // Steps of `dt` in `seconds` (at least one).
 long steps_in(double seconds, double dt);
 

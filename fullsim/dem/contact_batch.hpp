@@ -58,9 +58,9 @@ struct ContactBatch {
   // Runs `law` (a ContactLaw) on lanes [0, count), all of them touching pairs, with the vector
   // width of any x86-64 (two lanes); `evaluate_avx2` (four lanes) and `evaluate_avx512` (eight)
   // are the same loop, chosen at run time by what the processor has (`lane_bits_available`,
-  // force_kernel.hpp).
-  // The two give the same results bit for bit: each lane's arithmetic is the scalar one, and
-  // the translation unit is built without floating-point contraction (fullsim/CMakeLists.txt).
+  // force_kernel.hpp). All three give the same results bit for bit: each lane's arithmetic is
+  // the scalar one, and the translation unit is built without floating-point contraction
+  // (fullsim/CMakeLists.txt).
   template <class Law>
   [[gnu::noinline, gnu::flatten]] void evaluate(const Law& law, double dt) {
     lanes(law, dt);
