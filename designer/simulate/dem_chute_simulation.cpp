@@ -178,12 +178,8 @@ SimulationOutcome simulate_chute_with_dem(const SimulationRequest& request) {
   a.push_back("no-slip ramp as a saw-tooth mesh (45 deg faces, period 2R, height R) standing for the glued chips; "
               "the deposit height is measured above the teeth's crests");
   if (request.restart.empty()) {
-    const FillReport& f = scene->fill_report();
     a.push_back("filling by " + scene->rain().describe() + " (the fill height), against the closed gate: " +
-                fmt(f.inserted_count, 6) + " spheres rained in, " + fmt(f.trimmed_count, 6) + " trimmed" +
-                (f.settled ? ", settled (largest speed " + fmt(f.final_max_speed * 1e3) + " mm/s)"
-                           : ", NOT settled below the threshold within the time cap (largest speed " +
-                                 fmt(f.final_max_speed * 1e3) + " mm/s)"));
+                scene->fill_report().summary());
   } else {
     a.push_back("filling by rain-fall against the closed gate, settled and trimmed to the fill height (done by "
                 "the run the checkpoint continues)");

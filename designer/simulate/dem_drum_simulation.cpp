@@ -213,12 +213,8 @@ SimulationOutcome simulate_drum_with_dem(const SimulationRequest& request) {
   else
     a.push_back("full 3D drum with Table 2 P-W friction 0.2 on the shell and on the end plates turning with it");
   if (request.restart.empty()) {
-    const FillReport& f = scene->fill_report();
-    a.push_back("filling by " + scene->rain().describe() + " (the fill line): " + fmt(f.inserted_count, 6) +
-                " spheres rained in, " + fmt(f.trimmed_count, 6) + " trimmed" +
-                (f.settled ? ", settled (largest speed " + fmt(f.final_max_speed * 1e3) + " mm/s)"
-                           : ", NOT settled below the threshold within the time cap (largest speed " +
-                                 fmt(f.final_max_speed * 1e3) + " mm/s)"));
+    a.push_back("filling by " + scene->rain().describe() + " (the fill line): " +
+                scene->fill_report().summary());
   } else {
     a.push_back("filling by rain-fall, settled and trimmed to the fill line (done by the run the checkpoint "
                 "continues)");

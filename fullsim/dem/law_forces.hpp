@@ -5,10 +5,8 @@
 // a barrier, in thread order, so a run is deterministic for a given thread count. Wall
 // contacts (wall_contact_forces.hpp) touch one particle each and write directly.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 #ifdef _OPENMP
@@ -24,7 +22,6 @@ namespace feedflow {
 template <class Law>
 class LawForces final : public ForceKernel {
  public:
-  using History = typename Law::History;
   static constexpr std::size_t kHistory = Law::kHistorySize;
 
   explicit LawForces(const DemParameters& dem)

@@ -122,6 +122,13 @@ std::string FillReport::describe() const {
   return s + "\n";
 }
 
+std::string FillReport::summary() const {
+  return format("%zu spheres rained in, %zu trimmed", inserted_count, trimmed_count) +
+         (settled ? format(", settled (largest speed %.3g mm/s)", final_max_speed * 1e3)
+                  : format(", NOT settled below the threshold within the time cap (largest speed "
+                           "%.3g mm/s)", final_max_speed * 1e3));
+}
+
 FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream& log) {
   check(s);
   FillReport report;

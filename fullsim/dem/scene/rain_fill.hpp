@@ -78,6 +78,8 @@ struct FillReport {
   std::size_t failed_placements = 0; // tries that found no free spot (retried later)
   bool interrupted = false;          // Ctrl-C while filling: nothing to continue from
   std::string describe() const;      // the plan/log lines of the fill
+  // "N spheres rained in, M trimmed, settled (largest speed X mm/s)" for a run's assumptions.
+  std::string summary() const;
 };
 
 // Fills `engine` (prepared here if it is not yet; it needs no particles beforehand), settles,

@@ -7,6 +7,7 @@
 
 #include "fullsim/dem/scene/wedge_hopper_slab.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
+#include "tests/fullsim/dem/mass_books.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
@@ -43,12 +44,7 @@ TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
   e.run_until(e.time() + 0.25);
   const OutletSink& sink = *e.outlet_sink();
   ASSERT_GT(sink.removed_count(), 20u);  // it discharged
-  EXPECT_EQ(e.particles().size() + sink.removed_count() + f.trimmed_count, f.inserted_count);
-  std::set<std::uint32_t> ids(e.particles().id.begin(), e.particles().id.end());
-  for (const auto& ev : sink.events()) EXPECT_TRUE(ids.insert(ev.id).second) << "id twice: " << ev.id;
-  EXPECT_EQ(ids.size() + f.trimmed_count, f.inserted_count);
-  const double booked = e.particles().total_mass() + sink.removed_mass() + f.trimmed_mass;
-  EXPECT_NEAR(booked, f.inserted_mass, 1e-13 * f.inserted_mass);
+  dem_test::expect_mass_books_balance(e, f);
 }
 
 // The fill sits inside the container: no centre closer than R to the wedge (the admits

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
+#include "tests/fullsim/dem/mass_books.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
@@ -176,12 +177,7 @@ TEST(InclinedPlaneTwin, RainedMassIsInTheDomainSunkOrTrimmed) {
   const DemEngine& e = plane->engine();
   const OutletSink& sink = *e.outlet_sink();
   ASSERT_GT(sink.removed_count(), 5u);  // it ran off the end
-  EXPECT_EQ(e.particles().size() + sink.removed_count() + f.trimmed_count, f.inserted_count);
-  std::set<std::uint32_t> ids(e.particles().id.begin(), e.particles().id.end());
-  for (const auto& ev : sink.events()) EXPECT_TRUE(ids.insert(ev.id).second) << "id twice: " << ev.id;
-  EXPECT_EQ(ids.size() + f.trimmed_count, f.inserted_count);
-  const double booked = e.particles().total_mass() + sink.removed_mass() + f.trimmed_mass;
-  EXPECT_NEAR(booked, f.inserted_mass, 1e-13 * f.inserted_mass);
+  dem_test::expect_mass_books_balance(e, f);
 }
 
 }  // namespace
