@@ -8,6 +8,7 @@ constexpr std::string_view kNormalLaws[] = {"hysteretic_nonlinear2", "hysteretic
 constexpr std::string_view kRemapOrders[] = {"first", "second", "second_stress",
                                              "second_void_ratio", "second_density"};
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
+constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
 }  // namespace
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
@@ -51,6 +52,11 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
       label_field<S>("material_flux", &S::material_flux, kMaterialFluxes,
                      "material volume through the faces: donor_cell (default), limited (van "
                      "Leer MUSCL volume fraction) or plic (Youngs interface in mixed cells)",
+                     Presence::optional),
+      label_field<S>("mixed_cells", &S::mixed_cells, kMixedCellRules,
+                     "strain rate of the material in cells part filled with void: "
+                     "equal_strain_rate (the cell's, default) or void_first (the void takes "
+                     "the volume change, the material the shear)",
                      Presence::optional),
   };
   return fields;

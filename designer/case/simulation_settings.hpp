@@ -24,6 +24,7 @@ struct CelCaseSettings {
   std::optional<double> snapshot_interval;  // [s] between HDF5 field snapshots
   std::string remap_order;                  // empty: first; second; second_<quantity>
   std::string material_flux;                // empty: donor_cell; limited; plic
+  std::string mixed_cells;                  // empty: equal_strain_rate; void_first
 };
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields();

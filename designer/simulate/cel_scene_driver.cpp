@@ -84,6 +84,9 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
     throw InputError(c.file, "cel.cell_size", "gives " + std::to_string(g.cell_count()) +
                                                   " cells; choose a larger cell size");
   setup.scene.options.remap = cel_remap_options(c);
+  if (c.cel.mixed_cells == "void_first") setup.scene.options.mixed_cells = cel::MixedCellRule::void_first;
+  if (c.cel.mixed_cells == "equal_strain_rate")
+    setup.scene.options.mixed_cells = cel::MixedCellRule::equal_strain_rate;
   result.run = std::make_unique<cel::CelSceneRun>(setup.scene, setup.model);
   cel::CelSceneRun& run = *result.run;
   const auto checkpoint = request.out / "checkpoint.h5";
@@ -99,7 +102,10 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
   }
   if (log) {
     *log << "CEL-FEM plan (plane strain, hypoplastic G-B, remap: "
-         << remap_text(setup.scene.options.remap) << ", "
+         << remap_text(setup.scene.options.remap) << "; mixed cells: "
+         << (setup.scene.options.mixed_cells == cel::MixedCellRule::void_first ? "void first"
+                                                                               : "equal strain rate")
+         << ", "
          << omp_get_max_threads() << " OpenMP thread(s)):\n";
     for (const auto& line : setup.scene.plan) *log << "  " << line << '\n';
     const auto& gp = setup.scene.gravity;

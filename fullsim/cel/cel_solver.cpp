@@ -21,6 +21,20 @@ CelSolver::CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model,
 
 void CelSolver::add_material(const MaterialBlock& b) {
   const double h = grid_.cell_size;
+  const double grain_density = b.bulk_density * (1.0 + b.void_ratio);
+  if (!(grain_density > 0.0) || !std::isfinite(grain_density))
+    throw std::invalid_argument("material block: bulk density and void ratio must give a "
+                                "positive grain density rho (1 + e)");
+  const double known = remap_.grain_density();
+  if (known > 0.0 && std::abs(grain_density - known) > 1e-9 * known) {
+    std::ostringstream s;
+    s << "material block: grain density rho (1 + e) = " << grain_density
+      << " kg/m^3 differs from the earlier blocks' " << known
+      << " kg/m^3 (one material per solver: its blocks may differ in void ratio only with the "
+         "density that goes with it)";
+    throw std::invalid_argument(s.str());
+  }
+  remap_.set_grain_density(grain_density);
   const auto walls = place_walls(options_.rigid_walls, time_);
   for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
     if (cells_.solid[c] || distance_to_walls(walls, grid_.cell_centre(c)) < 0.0) continue;
@@ -94,7 +108,8 @@ CelStepReport CelSolver::step() {
   report.wall_forces = apply_wall_contact(grid_, walls, options_.contact, 0.5 * (dt_previous_ + dt),
                                           void_node_mass_, nodes_);
   const CellUpdateReport cu =
-      update_cell_states(grid_, active_, model_, options_.substepping, dt, nodes_, cells_);
+      update_cell_states(grid_, active_, model_, options_.substepping, options_.mixed_cells, dt,
+                         nodes_, cells_);
   report.most_substeps = cu.most_substeps;
   report.unconverged_cells = cu.unconverged_cells;
   report.remap =

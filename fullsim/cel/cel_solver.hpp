@@ -11,6 +11,7 @@
 #include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
 #include "fullsim/cel/discharge_ledger.hpp"
+#include "fullsim/cel/lagrangian_phase.hpp"
 #include "fullsim/cel/remap_phase.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
 #include "fullsim/cel/rigid_wall.hpp"
@@ -28,6 +29,7 @@ struct CelOptions {
   std::vector<RigidWall> rigid_walls{};  // signed-distance walls with Coulomb friction
   WallContactOptions contact{};
   RemapOptions remap{};  // advection order of the cell state, material flux (PLIC)
+  MixedCellRule mixed_cells = MixedCellRule::equal_strain_rate;  // models.md 2.3 item 7
   NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
   // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic

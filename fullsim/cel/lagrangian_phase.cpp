@@ -21,11 +21,26 @@ NodeVector advance_node_velocities(double average_dt, double void_node_mass, Nod
   return dropped;
 }
 
+Eigen::Matrix3d material_rate_of_deformation(const Eigen::Matrix3d& d, double vf, double dt,
+                                             MixedCellRule rule) {
+  if (rule == MixedCellRule::equal_strain_rate || vf >= 1.0 || !(vf > 0.0)) return d;
+  const double cell_rate = d(0, 0) + d(1, 1);
+  // The void (1 - vf of the cell) takes the volume change; compression beyond it goes to the
+  // material, at the rate that brings it to the cell's new volume.
+  const double closing = -cell_rate * dt - (1.0 - vf);
+  const double material_rate = closing > 0.0 ? -closing / (vf * dt) : 0.0;
+  Eigen::Matrix3d m = d;
+  const double shift = 0.5 * (cell_rate - material_rate);
+  m(0, 0) -= shift;
+  m(1, 1) -= shift;
+  return m;
+}
+
 CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
                                     const std::vector<std::size_t>& active_cells,
                                     const HypoplasticModel& model,
-                                    const SubsteppingOptions& substepping, double dt,
-                                    const NodeFields& nodes, CellFields& cells) {
+                                    const SubsteppingOptions& substepping, MixedCellRule rule,
+                                    double dt, const NodeFields& nodes, CellFields& cells) {
   int most = 0, unconverged = 0;
   const auto n_active = static_cast<long>(active_cells.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : most) reduction(+ : unconverged) \
@@ -40,7 +55,9 @@ CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
     const Eigen::Matrix3d w = 0.5 * (l - l.transpose());
     cells.volume_rate[c] = d.trace();
     MaterialPointState s{cells.stress[c], cells.void_ratio[c]};
-    const StepReport r = integrate_material_point(model, s, d, w, dt, substepping);
+    const Eigen::Matrix3d dm =
+        material_rate_of_deformation(d, cells.volume_fraction[c], dt, rule);
+    const StepReport r = integrate_material_point(model, s, dm, w, dt, substepping);
     cells.stress[c] = s.stress;
     cells.void_ratio[c] = s.void_ratio;
     most = std::max(most, r.substeps);

@@ -2,8 +2,12 @@
 // The Lagrangian phase after the forces (models.md 2.3 items 5-7): the central-difference
 // velocity update v^{n+1/2} = v^{n-1/2} + (dt^{n+1} + dt^n)/2 a^n with the kinematic constraints
 // (nodes without mass keep no velocity), then per active cell the velocity gradient, the
-// hypoplastic integrator over dt^{n+1} and tr D for the remap. Mixed cells take the cell's strain
-// rate (equal-strain-rate rule: the volume fraction of the Lagrangian cell is unchanged).
+// hypoplastic integrator over dt^{n+1} and tr D for the remap. Mixed cells (models.md 2.3 item
+// 7, `MixedCellRule`): equal strain rate (the material takes the cell's strain rate; the volume
+// fraction of the Lagrangian cell is unchanged), or void first (the void takes the cell's
+// volume change: the material is sheared at the cell's deviatoric rate and compressed only once
+// the void has closed, so a free-surface cell neither inflates nor compacts by the grid motion
+// around it).
 #include <cstddef>
 #include <vector>
 
@@ -18,6 +22,13 @@ inline constexpr double kVoidNodeMassFraction = 1e-6;
 // Returns the momentum dropped on void nodes (their m v + dt f) [kg m/s /m].
 NodeVector advance_node_velocities(double average_dt, double void_node_mass, NodeFields& nodes);
 
+enum class MixedCellRule { equal_strain_rate, void_first };
+
+// The in-plane rate of deformation the material of a cell with volume fraction vf takes from
+// the cell's d over dt under `rule`.
+Eigen::Matrix3d material_rate_of_deformation(const Eigen::Matrix3d& d, double vf, double dt,
+                                             MixedCellRule rule);
+
 struct CellUpdateReport {
   int most_substeps = 0;
   int unconverged_cells = 0;
@@ -26,7 +37,7 @@ struct CellUpdateReport {
 CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
                                     const std::vector<std::size_t>& active_cells,
                                     const HypoplasticModel& model,
-                                    const SubsteppingOptions& substepping, double dt,
-                                    const NodeFields& nodes, CellFields& cells);
+                                    const SubsteppingOptions& substepping, MixedCellRule rule,
+                                    double dt, const NodeFields& nodes, CellFields& cells);
 
 }  // namespace feedflow::cel

@@ -174,7 +174,7 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
                 stress(r, s) = face_value(stress(r, s), stress_[below](r, s), stress_[above](r, s));
         }
       }
-      const double dm = rho * vm;
+      const double dm = grain_density_ > 0.0 ? grain_density_ * vm / (1.0 + e) : rho * vm;
       exchange(delta_.material_volume, toward * vm);
       exchange(delta_.mass, toward * dm);
       exchange(delta_.void_mass, toward * e * dm);
@@ -190,6 +190,12 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
     now_.mass[c] += delta_.mass[c];
     now_.void_mass[c] += delta_.void_mass[c];
     now_.stress_volume[c] += delta_.stress_volume[c];
+    if (grain_density_ > 0.0 && now_.mass[c] > 0.0) {
+      // The stress integral follows the material volume it was spread over.
+      const double vm = grain_volume(c);
+      if (now_.material_volume[c] > 0.0) now_.stress_volume[c] *= vm / now_.material_volume[c];
+      now_.material_volume[c] = vm;
+    }
   }
   return {worst, outflow};
 }
@@ -269,9 +275,10 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
       }
   }
   for (std::size_t c = 0; c < n; ++c) {
-    now_.material_volume[c] = cells.volume_fraction[c] * now_.volume[c];
     now_.mass[c] = cells.mass[c];
     now_.void_mass[c] = cells.void_ratio[c] * cells.mass[c];
+    now_.material_volume[c] = grain_density_ > 0.0 ? grain_volume(c)
+                                                   : cells.volume_fraction[c] * now_.volume[c];
     now_.stress_volume[c] = cells.stress[c] * now_.material_volume[c];
   }
   const std::size_t nn = g.node_count();
@@ -311,6 +318,10 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
     cells.mass[c] = now_.mass[c];
     cells.stress[c] = now_.stress_volume[c] / vm;
     cells.void_ratio[c] = now_.void_mass[c] / now_.mass[c];
+    if (grain_density_ > 0.0 && vf > 1.0) {  // does not fit: packed to fill the cell
+      cells.void_ratio[c] = grain_density_ * v0 / now_.mass[c] - 1.0;
+      ++report.compacted_cells;
+    }
   }
 
   lump_nodal_mass(g, cells, nodes);

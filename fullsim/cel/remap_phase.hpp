@@ -20,6 +20,17 @@
 // from the remapped cells. Nodal momentum moves with these fluxes at the donor node's velocity
 // (donor cell): conservative, and the new velocity is a convex combination of old ones (no
 // overshoot at nodes that lose most of their mass).
+//
+// Grain-consistent volume (`set_grain_density`, used by CelSolver): a granular skeleton's volume
+// is fixed by its mass and void ratio, V_m = M (1 + e) / rho_g with the grain density rho_g =
+// rho (1 + e) of the material. With it the material volume at the start of the remap is M (1 + e)
+// / rho_g (not vf V^L), a face carries the mass rho_g dVm / (1 + e_f), and after each sweep the
+// material volume is taken again from the cell's mass and void mass. So the density of every cell
+// stays rho_g / (1 + e): a cell can neither keep the mass of a denser state than its void ratio
+// allows nor thin out to a foam. A cell whose material no longer fits (V_m > V) keeps vf = 1 and
+// its void ratio is lowered until it fits (`RemapReport::compacted_cells`). Without a grain
+// density the material volume is vf V^L and an overfilled cell keeps its mass with a higher
+// density.
 #include <cstdint>
 #include <vector>
 
@@ -51,6 +62,7 @@ struct RemapReport {
   NodeVector outflow_momentum = NodeVector::Zero();   // nodal, through outflow faces [kg m/s /m]
   double largest_volume_fraction = 0.0;   // of the remapped cells before clipping to 1 [-]
   double smallest_volume_fraction = 0.0;  // of the remapped cells, before the cut [-]
+  int compacted_cells = 0;  // grain-consistent: overfilled cells whose void ratio was lowered
 };
 
 class RemapPhase {
@@ -59,6 +71,9 @@ class RemapPhase {
   explicit RemapPhase(const RemapOptions& options = {}, double volume_fraction_cut = 1e-12)
       : options_(options), cut_(volume_fraction_cut) {}
   const RemapOptions& options() const { return options_; }
+  // rho_g = rho (1 + e) [kg/m^3]; 0 (the default) leaves the material volume vf V^L.
+  void set_grain_density(double rho_g) { grain_density_ = rho_g; }
+  double grain_density() const { return grain_density_; }
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
   // constraints applied.
@@ -83,8 +98,14 @@ class RemapPhase {
                        std::size_t donor, double dv, double toward) const;
   NodeVector sweep_momentum(const PlaneStrainGrid& grid, int axis);  // returns the outflow
 
+  // Material volume of cell c from its current contents (grain-consistent mode).
+  double grain_volume(std::size_t c) const {
+    return (now_.mass[c] + now_.void_mass[c]) / grain_density_;
+  }
+
   RemapOptions options_;
   double cut_;
+  double grain_density_ = 0.0;
   bool outflow_lo_[kDimension] = {false, false};  // left, bottom
   bool outflow_hi_[kDimension] = {false, false};  // right, top
   Contents now_, delta_;

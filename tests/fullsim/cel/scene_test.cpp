@@ -81,14 +81,17 @@ TEST(CelHopperScene, FlowsAt60mmNearlyStopsAt20mm) {
   EXPECT_LT(std::abs(narrow.balance), 1e-12);
 }
 
-// A short no-slip ramp at 29.5 deg fed from a small bin (0.2 m long, filled 0.2 m, gate lifted
-// to 0.1 m), 20 mm cells: the released material comes (nearly) to rest within 3 s and leaves a
-// layer on the middle of the ramp (h_stop > 0 below the critical-state angle), with grid +
-// run-off + cut-off mass = initial to round-off. (The 37 deg twin of this scene still creeps
-// after 3 s; the angle trend is checked at full size in scene_long_test.cpp.)
-TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
+struct ChuteRelease {
+  double layer = 0.0;         // mean thickness over the middle two fifths of the ramp [m]
+  double energy_ratio = 0.0;  // kinetic energy at the end / its peak [-]
+  double balance = 0.0;       // (grid + run-off + cut-off) / initial - 1 [-]
+};
+
+// A short no-slip ramp fed from a small bin (0.2 m long, filled 0.2 m, gate lifted to 0.1 m),
+// 20 mm cells, run until the kinetic energy falls below 1e-3 of its peak or 3 s.
+ChuteRelease release_on_ramp(double angle) {
   Chute c;
-  c.angle = 29.5 * kDeg;
+  c.angle = angle;
   c.width = 1.0;
   c.length = 0.8;
   c.gate_opening = 0.1;
@@ -115,13 +118,25 @@ TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
     const double x = (i + 0.5) * h - start;
     if (x > 0.3 * c.length && x < 0.7 * c.length) sum += t[i], ++n;
   }
-  const double balance = (s.total_mass() + s.discharge().total() + s.removed_mass()) / run.initial_mass() - 1.0;
-  std::printf("29.5 deg twin: mid-ramp layer %.2f mm, KE/peak %.3g after %.2f s, run-off %.3g of "
-              "the mass, balance %.2g\n", 1e3 * sum / n, s.kinetic_energy() / peak,
-              s.time() - run.event_time(), s.discharge().total() / run.initial_mass(), balance);
-  EXPECT_LT(s.kinetic_energy(), 3e-2 * peak);
-  EXPECT_GT(sum / n, 0.005);
-  EXPECT_LT(std::abs(balance), 1e-12);
+  ChuteRelease r{sum / n, s.kinetic_energy() / peak,
+                 (s.total_mass() + s.discharge().total() + s.removed_mass()) / run.initial_mass() - 1.0};
+  std::printf("%.1f deg twin: mid-ramp layer %.2f mm, KE/peak %.3g after %.2f s, run-off %.3g of "
+              "the mass, balance %.2g\n", angle / kDeg, 1e3 * r.layer, r.energy_ratio,
+              s.time() - run.event_time(), s.discharge().total() / run.initial_mass(), r.balance);
+  return r;
+}
+
+// At 29.5 deg the released material (nearly) comes to rest within 3 s and leaves a layer on
+// the middle of the ramp (h_stop > 0 below the critical-state angle), with grid + run-off +
+// cut-off mass = initial to round-off. Measured 4.7 mm, a quarter of a cell: the twin is coarse.
+// (The advected volume fraction of the earlier remap read 15.7 mm: its deposit was partly
+// foam, rho (1 + e) far below rho_g. The 37 deg twin still flows after 3 s, KE 0.43 of its
+// peak, so the angle order is checked at full size in full_size_scene_test.cpp.)
+TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
+  const ChuteRelease r = release_on_ramp(29.5 * kDeg);
+  EXPECT_LT(r.energy_ratio, 3e-2);
+  EXPECT_GT(r.layer, 0.1 * 0.02);
+  EXPECT_LT(std::abs(r.balance), 1e-12);
 }
 
 // The free surface of a bed filled to 0.1 m with a 20 deg slope cut in it (cells filled by
