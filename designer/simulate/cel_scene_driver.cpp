@@ -62,6 +62,7 @@ std::string cel_model_label(const Case& c) {
   std::string remap = second ? "second-order" : "donor-cell";
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
   if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";
+  if (c.cel.mixed_cells == "void_first") remap += ", void-first mixed cells";
   return "CEL-FEM plane strain (G-B hypoplastic, " + remap + " remap)";
 }
 

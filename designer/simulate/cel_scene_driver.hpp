@@ -47,7 +47,8 @@ cel::SceneMaterial scene_material(const Case& c);
 double cel_cell_size(const Case& c, double default_cell_size);
 HypoplasticModel cel_material_model(const Case& c);
 // The model label of a CEL result row: "CEL-FEM plane strain (G-B hypoplastic, <remap>)" with
-// the remap chosen by [cel] remap_order and material_flux (default "donor-cell remap").
+// the remap chosen by [cel] remap_order, material_flux and mixed_cells (default "donor-cell
+// remap").
 std::string cel_model_label(const Case& c);  // InputError when the material has none
 
 CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup);

@@ -80,17 +80,20 @@ TEST_F(SimulateCel, RestartFromAnotherGridIsRefused) {
 
 }  // namespace
 
-// [cel] remap_order and material_flux reach the solver: the plan and the result's model name
-// say second order and PLIC; an unknown order is refused as bad input (exit 2) naming the key.
+// [cel] remap_order, material_flux and mixed_cells reach the solver: the plan and the result's
+// model name say second order and PLIC, the plan says void first; an unknown order is refused
+// as bad input (exit 2) naming the key.
 TEST_F(SimulateCel, RemapOptionsReachThePlanAndTheResults) {
   const auto r = run_feedflow(kHopper + "--set cel.remap_order=second --set cel.material_flux=plic "
-                                        "--time 0.02s --out plic", dir_);
+                                        "--set cel.mixed_cells=void_first --time 0.02s --out plic",
+                              dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("mixed cells: void first"), std::string::npos);
   EXPECT_NE(r.out.find("remap: second-order (van Leer MUSCL: stress void ratio density) state, "
                        "PLIC (Youngs) material flux"), std::string::npos);
   const auto j = nlohmann::json::parse(slurp(dir_ / "plic/results.json"));
   EXPECT_NE(j.at("results").at("mass_flow_rate").at("model").get<std::string>().find(
-                "second-order, PLIC remap"), std::string::npos);
+                "second-order, PLIC, void-first mixed cells remap"), std::string::npos);
   const auto bad = run_feedflow(kHopper + "--set cel.remap_order=third --time 0.01s --out bad", dir_);
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("cel.remap_order"), std::string::npos);
