@@ -29,12 +29,14 @@ double cel_cell_size(const Case& c, double default_cell_size) {
 }
 
 namespace {
-cel::RemapOptions cel_remap_options(const Case& c) {
+cel::RemapOptions cel_remap_options(const Case& c, cel::MaterialFlux scene_flux) {
   cel::RemapOptions o;
+  o.material_flux = scene_flux;
   const std::string& order = c.cel.remap_order;
   o.second_order_stress = order == "second" || order == "second_stress";
   o.second_order_void_ratio = order == "second" || order == "second_void_ratio";
   o.second_order_density = order == "second" || order == "second_density";
+  if (c.cel.material_flux == "donor_cell") o.material_flux = cel::MaterialFlux::donor_cell;
   if (c.cel.material_flux == "limited") o.material_flux = cel::MaterialFlux::limited;
   if (c.cel.material_flux == "plic") o.material_flux = cel::MaterialFlux::plic;
   return o;
@@ -56,8 +58,8 @@ std::string remap_text(const cel::RemapOptions& o) {
 }
 }  // namespace
 
-std::string cel_model_label(const Case& c) {
-  const cel::RemapOptions o = cel_remap_options(c);
+std::string cel_model_label(const Case& c, cel::MaterialFlux scene_flux) {
+  const cel::RemapOptions o = cel_remap_options(c, scene_flux);
   const bool second = o.second_order_stress || o.second_order_void_ratio || o.second_order_density;
   std::string remap = second ? "second-order" : "donor-cell";
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
@@ -84,7 +86,7 @@ CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup) 
   if (g.cell_count() > 4'000'000)
     throw InputError(c.file, "cel.cell_size", "gives " + std::to_string(g.cell_count()) +
                                                   " cells; choose a larger cell size");
-  setup.scene.options.remap = cel_remap_options(c);
+  setup.scene.options.remap = cel_remap_options(c, setup.scene.options.remap.material_flux);
   if (c.cel.mixed_cells == "void_first") setup.scene.options.mixed_cells = cel::MixedCellRule::void_first;
   if (c.cel.mixed_cells == "equal_strain_rate")
     setup.scene.options.mixed_cells = cel::MixedCellRule::equal_strain_rate;

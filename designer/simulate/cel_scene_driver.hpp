@@ -49,7 +49,9 @@ HypoplasticModel cel_material_model(const Case& c);
 // The model label of a CEL result row: "CEL-FEM plane strain (G-B hypoplastic, <remap>)" with
 // the remap chosen by [cel] remap_order, material_flux and mixed_cells (default "donor-cell
 // remap").
-std::string cel_model_label(const Case& c);  // InputError when the material has none
+// `scene_flux`: the scene's material flux when the case names none (the drum's is PLIC).
+std::string cel_model_label(const Case& c,
+                            cel::MaterialFlux scene_flux = cel::MaterialFlux::donor_cell);
 
 CelRunResult run_cel_scene(const SimulationRequest& request, CelRunSetup setup);
 

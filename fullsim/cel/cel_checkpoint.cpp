@@ -76,6 +76,7 @@ void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& 
     f.set_attribute("/solver", "cell_updates", static_cast<std::int64_t>(s.cell_updates));
     f.set_attribute("/solver", "removed_mass", s.removed_mass);
     f.set_attribute("/solver", "settling_damping", s.settling_damping);
+    f.set_attribute("/solver", "frame_start", s.frame_start);
     const SceneRunState& r = run.run_state();
     f.create_group("/run");
     f.set_attribute("/run", "phase", static_cast<std::int64_t>(r.phase == ScenePhase::event));
@@ -138,6 +139,7 @@ CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const Plane
   s.cell_updates = f.integer_attribute("/solver", "cell_updates");
   s.removed_mass = f.double_attribute("/solver", "removed_mass");
   s.settling_damping = f.double_attribute("/solver", "settling_damping");
+  s.frame_start = f.double_attribute("/solver", "frame_start");
   c.run.phase = f.integer_attribute("/run", "phase") ? ScenePhase::event : ScenePhase::gravity;
   c.run.event_time = f.double_attribute("/run", "event_time");
   c.run.peak_kinetic_energy = f.double_attribute("/run", "peak_kinetic_energy");

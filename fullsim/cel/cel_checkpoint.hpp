@@ -12,7 +12,7 @@
 namespace feedflow::cel {
 
 inline constexpr const char* kCelCheckpointFormat = "feedflow CEL checkpoint";
-inline constexpr long kCelCheckpointVersion = 1;
+inline constexpr long kCelCheckpointVersion = 2;  // 2: the turning frame's start
 
 struct CelCheckpoint {
   CelSolverState solver;

@@ -27,6 +27,7 @@ struct SceneEvent {
   std::vector<std::size_t> walls_removed;  // indices into CelOptions::rigid_walls
   std::vector<std::size_t> walls_started;  // start moving at the event
   double motion_duration = std::numeric_limits<double>::infinity();  // then rest again [s]
+  bool frame_started = false;  // the solver turns to CelOptions::frame (a drum)
 };
 
 // The material of a scene: bulk density and void ratio of the fill, initial stress -10 Pa I

@@ -38,6 +38,7 @@ void CelSceneRun::start_event() {
   run_.phase = ScenePhase::event;
   run_.event_time = t;
   solver_.set_settling_damping(0.0);
+  if (scene_.event.frame_started) solver_.start_turning_frame();
   for (std::size_t k : scene_.event.walls_removed) solver_.rigid_wall(k).removal_time = t;
   for (std::size_t k : scene_.event.walls_started) {
     solver_.rigid_wall(k).motion_start = t;

@@ -70,6 +70,14 @@ void CelSolver::set_velocity(const NodeVector& v) {
   apply_node_constraints(nodes_);
 }
 
+void CelSolver::start_turning_frame() {
+  options_.frame.start = time_;
+  for (std::size_t a = 0; a < grid_.node_count(); ++a)
+    if (nodes_.mass[a] > void_node_mass_)
+      nodes_.velocity[a] -= options_.frame.carried_velocity(grid_.node_position(a));
+  apply_node_constraints(nodes_);
+}
+
 void CelSolver::refresh_nodes() {
   assign_node_constraints(grid_, options_.walls, cells_, nodes_);
   lump_nodal_mass(grid_, cells_, nodes_);
@@ -100,7 +108,9 @@ CelStepReport CelSolver::step() {
   const double dt = report.time_step.dt;
   report.dt = dt;
   assemble_nodal_forces(grid_, active_, options_.forces,
-                        gravity_factor(time_) * options_.gravity, cells_, nodes_);
+                        gravity_factor(time_) * options_.frame.gravity(options_.gravity, time_),
+                        cells_, nodes_);
+  add_frame_forces(options_.frame, grid_, time_, void_node_mass_, nodes_);
   if (options_.settling_damping > 0.0)
     for (std::size_t a = 0; a < grid_.node_count(); ++a)
       nodes_.force[a] -= options_.settling_damping * nodes_.mass[a] * nodes_.velocity[a];
@@ -166,6 +176,7 @@ CelSolverState CelSolver::state() const {
   s.cell_updates = cell_updates_;
   s.removed_mass = removed_mass_;
   s.settling_damping = options_.settling_damping;
+  s.frame_start = options_.frame.start;
   for (const auto& w : options_.rigid_walls) {
     s.wall_removal_times.push_back(w.removal_time);
     s.wall_motion_starts.push_back(w.motion_start);
@@ -191,6 +202,7 @@ void CelSolver::restore(const CelSolverState& s) {
   cell_updates_ = s.cell_updates;
   removed_mass_ = s.removed_mass;
   options_.settling_damping = s.settling_damping;
+  options_.frame.start = s.frame_start;
   for (std::size_t k = 0; k < walls; ++k) {
     options_.rigid_walls[k].removal_time = s.wall_removal_times[k];
     options_.rigid_walls[k].motion_start = s.wall_motion_starts[k];

@@ -6,6 +6,7 @@
 // Rigid walls at any angle act on the nodes after the velocity update (wall_contact, 2.6 C1);
 // mass leaving through outflow box faces is booked in the discharge ledger (2.7).
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "fullsim/cel/box_walls.hpp"
@@ -16,6 +17,7 @@
 #include "fullsim/cel/nodal_forces.hpp"
 #include "fullsim/cel/rigid_wall.hpp"
 #include "fullsim/cel/stable_time_step.hpp"
+#include "fullsim/cel/turning_frame.hpp"
 #include "fullsim/cel/wall_contact.hpp"
 #include "models/hypoplastic/material_point_integrator.hpp"
 
@@ -30,7 +32,8 @@ struct CelOptions {
   WallContactOptions contact{};
   RemapOptions remap{};  // advection order of the cell state, material flux (PLIC)
   MixedCellRule mixed_cells = MixedCellRule::equal_strain_rate;  // models.md 2.3 item 7
-  NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2]
+  NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2], in the laboratory
+  TurningFrame frame{};  // the laboratory unless started (a drum: the frame of its shell)
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
   // Mass-proportional damping -alpha m v for the gravity (settling) phase only, as dynamic
   // relaxation [1/s]; 0: off (default). Not physical: a run that uses it says so.
@@ -61,6 +64,7 @@ struct CelSolverState {
   long cell_updates = 0;
   double removed_mass = 0.0;
   double settling_damping = 0.0;
+  double frame_start = std::numeric_limits<double>::infinity();  // TurningFrame::start [s]
   std::vector<double> wall_removal_times, wall_motion_starts, wall_motion_ends;  // per rigid wall
   DischargeLedger discharge;
 };
@@ -89,6 +93,10 @@ class CelSolver {
   // Scene events: a wall removed or set moving at a time, dynamic relaxation switched off.
   RigidWall& rigid_wall(std::size_t k) { return options_.rigid_walls.at(k); }
   void set_settling_damping(double alpha) { options_.settling_damping = alpha; }
+  // From now on the solver works in options().frame, turning at its angular velocity: the
+  // material's velocities become relative to the frame (v - omega x (x - c)).
+  void start_turning_frame();
+  const TurningFrame& frame() const { return options_.frame; }
 
   // The state for a checkpoint, and its restoration (grid sizes and wall count must match).
   CelSolverState state() const;
