@@ -34,7 +34,8 @@ void CelSolver::add_material(const MaterialBlock& b) {
          "density that goes with it)";
     throw std::invalid_argument(s.str());
   }
-  remap_.set_grain_density(grain_density);
+  const HypoplasticParameters& hp = model_.parameters;
+  remap_.set_grain_density(grain_density, {hp.e_d0, hp.h_s, hp.n});
   const auto walls = place_walls(options_.rigid_walls, time_);
   for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
     if (cells_.solid[c] || distance_to_walls(walls, grid_.cell_centre(c)) < 0.0) continue;
@@ -105,6 +106,17 @@ CelStepReport CelSolver::step() {
   refresh_active_cells();
   report.time_step = stable_time_step(grid_, active_, model_, options_.time_step, options_.forces,
                                       nodes_, cells_);
+  if (report.time_step.failed_cell) {
+    const std::size_t c = *report.time_step.failed_cell;
+    std::ostringstream s;
+    s << "CEL blow-up at step " << steps_ << ", t = " << time_ << " s, cell ("
+      << grid_.cell_i(c) << ", " << grid_.cell_j(c) << "): no finite wave speed (void ratio "
+      << cells_.void_ratio[c] << ", density " << cells_.density(c, grid_.cell_volume())
+      << " kg/m^3, pressure " << -cells_.stress[c].trace() / 3.0 << " Pa); the last step was "
+      << dt_previous_ << " s, try a time step below " << 0.5 * dt_previous_
+      << " s (time_step.safety " << 0.5 * options_.time_step.safety << ")";
+    throw NumericalFailure(s.str());
+  }
   const double dt = report.time_step.dt;
   report.dt = dt;
   assemble_nodal_forces(grid_, active_, options_.forces,

@@ -60,6 +60,10 @@ void RemapPhase::Contents::resize(std::size_t n) {
   stress_volume.assign(n, Eigen::Matrix3d::Zero());
 }
 
+double DensestState::void_ratio(const Eigen::Matrix3d& stress) const {
+  return e_d0 * std::exp(-std::pow(std::max(-stress.trace(), 0.0) / h_s, n));
+}
+
 RemapOptions second_order_state(RemapOptions o) {
   o.second_order_stress = o.second_order_void_ratio = o.second_order_density = true;
   return o;
@@ -319,8 +323,11 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
     cells.stress[c] = now_.stress_volume[c] / vm;
     cells.void_ratio[c] = now_.void_mass[c] / now_.mass[c];
     if (grain_density_ > 0.0 && vf > 1.0) {  // does not fit: packed to fill the cell
-      cells.void_ratio[c] = grain_density_ * v0 / now_.mass[c] - 1.0;
+      const double fit = grain_density_ * v0 / now_.mass[c] - 1.0;
+      const double densest = densest_.void_ratio(cells.stress[c]);
+      cells.void_ratio[c] = std::max(fit, densest);
       ++report.compacted_cells;
+      if (fit < densest) ++report.overpacked_cells;
     }
   }
 

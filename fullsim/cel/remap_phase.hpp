@@ -28,9 +28,12 @@
 // material volume is taken again from the cell's mass and void mass. So the density of every cell
 // stays rho_g / (1 + e): a cell can neither keep the mass of a denser state than its void ratio
 // allows nor thin out to a foam. A cell whose material no longer fits (V_m > V) keeps vf = 1 and
-// its void ratio is lowered until it fits (`RemapReport::compacted_cells`). Without a grain
-// density the material volume is vf V^L and an overfilled cell keeps its mass with a higher
-// density.
+// its void ratio is lowered until it fits (`RemapReport::compacted_cells`), but not below the
+// densest state the law allows at its pressure, e_d0 exp(-(-tr T / h_s)^n) (`DensestState`):
+// a cell that would need more keeps that void ratio with vf = 1 and a density above rho_g /
+// (1 + e) (`RemapReport::overpacked_cells`; cut cells at walls inclined to the grid, whose lower
+// face the staircase shuts, fill up so). Without a grain density the material volume is vf V^L
+// and an overfilled cell keeps its mass with a higher density.
 #include <cstdint>
 #include <vector>
 
@@ -62,7 +65,14 @@ struct RemapReport {
   NodeVector outflow_momentum = NodeVector::Zero();   // nodal, through outflow faces [kg m/s /m]
   double largest_volume_fraction = 0.0;   // of the remapped cells before clipping to 1 [-]
   double smallest_volume_fraction = 0.0;  // of the remapped cells, before the cut [-]
-  int compacted_cells = 0;  // grain-consistent: overfilled cells whose void ratio was lowered
+  int compacted_cells = 0;   // grain-consistent: overfilled cells whose void ratio was lowered
+  int overpacked_cells = 0;  // of those, cells at the densest state with rho > rho_g / (1 + e)
+};
+
+// The densest void ratio of the law at a stress: e_d0 exp(-(-tr T / h_s)^n) (Bauer).
+struct DensestState {
+  double e_d0 = 0.0, h_s = 1.0, n = 1.0;
+  double void_ratio(const Eigen::Matrix3d& stress) const;
 };
 
 class RemapPhase {
@@ -72,7 +82,10 @@ class RemapPhase {
       : options_(options), cut_(volume_fraction_cut) {}
   const RemapOptions& options() const { return options_; }
   // rho_g = rho (1 + e) [kg/m^3]; 0 (the default) leaves the material volume vf V^L.
-  void set_grain_density(double rho_g) { grain_density_ = rho_g; }
+  void set_grain_density(double rho_g, const DensestState& densest = {}) {
+    grain_density_ = rho_g;
+    densest_ = densest;
+  }
   double grain_density() const { return grain_density_; }
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
@@ -106,6 +119,7 @@ class RemapPhase {
   RemapOptions options_;
   double cut_;
   double grain_density_ = 0.0;
+  DensestState densest_{};
   bool outflow_lo_[kDimension] = {false, false};  // left, bottom
   bool outflow_hi_[kDimension] = {false, false};  // right, top
   Contents now_, delta_;

@@ -22,6 +22,10 @@ TimeStepChoice stable_time_step(const PlaneStrainGrid& grid,
     const double cd =
         dilatational_wave_speed_bound(model, cells.stress[c], cells.void_ratio[c], rho);
     cells.wave_speed[c] = cd;
+    if (!(cd >= 0.0) || !std::isfinite(cd)) {
+      choice.failed_cell = c;
+      return choice;
+    }
     choice.max_wave_speed = std::max(choice.max_wave_speed, cd);
     NodeVector v = NodeVector::Zero();
     for (std::size_t a : grid.cell_nodes(c)) v += nodes.velocity[a];

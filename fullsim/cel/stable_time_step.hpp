@@ -5,6 +5,7 @@
 // with lumped mass reduced by the bulk-viscosity damping ratio
 // xi = b1 - b2^2 (h / c_d) min(0, tr D). The step is the smallest dt_c, capped.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "fullsim/cel/cel_fields.hpp"
@@ -22,6 +23,8 @@ struct TimeStepChoice {
   double dt = 0.0;                // [s]
   std::size_t limiting_cell = 0;  // the cell with the smallest dt_c (0 when none is active)
   double max_wave_speed = 0.0;    // largest c_d [m/s]
+  // A cell whose state gives no finite wave speed (dt is then not valid): the blow-up guard's.
+  std::optional<std::size_t> failed_cell;
 };
 
 // Writes CellFields::wave_speed of the active cells.

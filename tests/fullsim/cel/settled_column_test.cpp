@@ -2,6 +2,8 @@
 // ramped gravity between free-slip walls: weight, K0 path, wave speed (issue 7 validation 2).
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 #include <cstdio>
 
@@ -137,6 +139,27 @@ TEST(CelSettledColumn, BlowUpGuardThrows) {
     EXPECT_NE(m.find("step"), std::string::npos);
     EXPECT_NE(m.find("cell ("), std::string::npos);
     EXPECT_NE(m.find("time step below"), std::string::npos);
+  }
+}
+
+// A cell whose state gives no finite wave speed (here a NaN stress) stops the run through the
+// guard, naming the cell and a safer step, before the time-step pass would fail on it (it was
+// an internal error: a 5 mm pilot hopper ended so).
+TEST(CelSettledColumn, StateWithoutAWaveSpeedStopsTheRun) {
+  CelSolver s(make_plane_strain_grid(4, 6, kCell), make_hypoplastic_model(loblolly_pine_table1()),
+              SettledColumn::options());
+  s.add_material({{0.0, 0.0}, {0.08, 0.08}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
+  s.step();
+  CelSolverState state = s.state();
+  state.cells.stress[s.grid().cell(1, 2)](0, 0) = std::numeric_limits<double>::quiet_NaN();
+  s.restore(state);
+  try {
+    s.step();
+    FAIL() << "no blow-up reported";
+  } catch (const NumericalFailure& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("cell (1, 2): no finite wave speed"), std::string::npos) << m;
+    EXPECT_NE(m.find("time step below"), std::string::npos) << m;
   }
 }
 
