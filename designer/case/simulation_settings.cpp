@@ -9,6 +9,7 @@ constexpr std::string_view kRemapOrders[] = {"first", "second", "second_stress",
                                              "second_void_ratio", "second_density"};
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
+constexpr std::string_view kHopperSections[] = {"half", "full"};
 }  // namespace
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
@@ -57,6 +58,10 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
                      "strain rate of the material in cells part filled with void: "
                      "equal_strain_rate (the cell's, default) or void_first (the void takes "
                      "the volume change, the material the shear)",
+                     Presence::optional),
+      label_field<S>("hopper_section", &S::hopper_section, kHopperSections,
+                     "section of a wedge hopper: half (the seed's half slice with a symmetry "
+                     "plane at the centre, default) or full (the full width, both walls)",
                      Presence::optional),
   };
   return fields;

@@ -25,6 +25,7 @@ struct CelCaseSettings {
   std::string remap_order;                  // empty: first; second; second_<quantity>
   std::string material_flux;                // empty: donor_cell; limited; plic
   std::string mixed_cells;                  // empty: equal_strain_rate; void_first
+  std::string hopper_section;               // empty: half; full
 };
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields();

@@ -28,15 +28,21 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
                      "the CEL-FEM scene is plane strain: a wedge hopper is expected, not '" +
                          hopper.shape + "' (use --solver dem or feedflow design)");
   const double phi_w = hopper.wall_friction_angle.value_or(c.material.bulk.wall_friction_angle);
+  const cel::HopperSection section =
+      c.cel.hopper_section == "full" ? cel::HopperSection::full : cel::HopperSection::half;
+  const std::string section_text = section == cel::HopperSection::full
+                                       ? "full-width section"
+                                       : "half slice (symmetry plane, x 2)";
   CelRunSetup setup;
   try {
-    setup.scene = cel::make_hopper_scene(hopper, phi_w, scene_material(c), cel_cell_size(c, 0.01));
+    setup.scene = cel::make_hopper_scene(hopper, phi_w, scene_material(c), cel_cell_size(c, 0.01),
+                                         section);
   } catch (const std::invalid_argument& e) {
     throw InputError(c.file, "hopper", e.what());
   }
   setup.model = cel_material_model(c);
   const double slot = hopper.slot_length.value_or(1.0);
-  const double depth = setup.scene.section_depth_factor * slot;  // kg/m of half slice -> kg
+  const double depth = setup.scene.section_depth_factor * slot;  // kg/m of the section -> kg
   setup.sample_interval = 0.01;
   setup.sample = [depth](const cel::CelSceneRun& run) {
     const auto& s = run.solver();
@@ -64,11 +70,12 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
     const bool arched = final_per_metre < kArchedShare * scale;
     rec.results.emplace_back("mass_flow_rate",
                              Estimate{per_metre * slot, "kg/s", f * q.low * slot, f * q.high * slot,
-                                      model_label + ", x slot length " +
+                                      model_label + ", " + section_text + ", x slot length " +
                                           format_quantity(slot, "m", 3),
                                       Rung::L2, ""});
     rec.results.emplace_back("mass_flow_rate_per_metre",
-                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high, model_label, Rung::L2, ""});
+                             Estimate{per_metre, "kg/s/m", f * q.low, f * q.high,
+                                      model_label + ", " + section_text, Rung::L2, ""});
     rec.results.emplace_back("final_flow_rate_per_metre",
                              Estimate{final_per_metre, "kg/s/m", std::nullopt, std::nullopt,
                                       "slope over the last quarter of the run", Rung::L2, ""});
@@ -76,7 +83,8 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
                                                  std::nullopt, model_label, Rung::L2, ""});
     // Flow pattern from the velocity field at mid-height of the converging section.
     const double knee = (0.5 * hopper.bin_width - 0.5 * w) / std::tan(hopper.semi_angle);
-    const double ratio = cel::wall_to_centre_speed_ratio(s, 0.5 * knee);
+    const double ratio =
+        cel::wall_to_centre_speed_ratio(s, 0.5 * knee, cel::hopper_centre_line(hopper, section));
     const bool mass = ratio > kMassFlowSpeedRatio;
     rec.results.emplace_back("flow_pattern", Estimate{arched ? "none (arched)" : mass ? "mass" : "funnel",
                                                       "", std::nullopt, std::nullopt, model_label, Rung::L2, ""});
@@ -116,15 +124,20 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
     for (const auto& row : out.series.rows())
       if (row[0] >= t_event) series.x.push_back(row[0] - t_event), series.y.push_back(row[1]);
     chart.series.push_back(series);
-    chart.note = "Ledger of the outflow face, scaled from the half slice to the slot length.";
+    chart.note = "Ledger of the outflow face, scaled from the " + section_text +
+                 " to the slot length.";
     rec.charts.push_back(chart);
   }
   add_throughput_result(r, rec);
   add_reduced_model_results(c, {"mass_flow_rate", "flow_pattern", "critical_outlet_width"}, rec);
   rec.verdict = verdict.verdict();
   rec.assumptions = {
-      "Plane strain half slice with a symmetry plane, as the seed's FEM: the rate per metre is "
-      "multiplied by the slot length " + format_quantity(slot, "m", 3) +
+      std::string(section == cel::HopperSection::full
+                      ? "Plane strain full-width section, both walls ([cel] hopper_section = "
+                        "full): the rate per metre is "
+                      : "Plane strain half slice with a symmetry plane, as the seed's FEM ([cel] "
+                        "hopper_section = half): the half slice's rate per metre is doubled and ") +
+          "multiplied by the slot length " + format_quantity(slot, "m", 3) +
           (hopper.slot_length ? "" : " (assumed 1 m: the case gives no slot length)") +
           "; end walls of the slot are not modelled (errs high for short slots).",
       "Initial void ratio 0.7102 (seed deck) at the case's bulk density; initial stress -10 Pa I.",

@@ -46,15 +46,16 @@ DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double
   return r;
 }
 
-double wall_to_centre_speed_ratio(const CelSolver& solver, double y) {
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x) {
   const auto& g = solver.grid();
   const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);
+  const int i0 = std::clamp(static_cast<int>(std::lround((centre_x - g.origin.x()) / g.cell_size)), 0, g.nx);
   double heaviest = 0.0;
-  for (int i = 0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
+  for (int i = i0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
   const double light = 0.05 * heaviest;  // nodes of nearly empty cells do not count
   double centre = 0.0, wall = 0.0;
   bool found = false;
-  for (int i = 0; i <= g.nx; ++i) {
+  for (int i = i0; i <= g.nx; ++i) {
     const std::size_t a = g.node(i, j);
     if (solver.nodes().mass[a] <= light) continue;
     if (!found) centre = solver.nodes().velocity[a].norm(), found = true;

@@ -21,9 +21,10 @@ struct DischargeRate {
 DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass);
 
 // Speed of the material beside the inclined wall over the centreline speed, at the height
-// `y` (nodes with mass on that grid row; the wall-side node is the last one carrying mass).
-// Mass flow when it exceeds 0.1 (the wall material moves), funnel flow otherwise.
-double wall_to_centre_speed_ratio(const CelSolver& solver, double y);
+// `y` (nodes with mass on that grid row from the node nearest `centre_x`, the centre line,
+// towards +x; the wall-side node is the last one carrying mass). Mass flow when it exceeds 0.1
+// (the wall material moves), funnel flow otherwise.
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x = 0.0);
 
 struct FreeSurface {
   std::vector<double> x, y;  // points where the volume fraction crosses 0.5 [m]

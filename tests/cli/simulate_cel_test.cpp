@@ -98,3 +98,30 @@ TEST_F(SimulateCel, RemapOptionsReachThePlanAndTheResults) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("cel.remap_order"), std::string::npos);
 }
+
+// [cel] hopper_section reaches the scene: "full" puts the full-width section in the plan, the
+// q_m rows' model and the first assumption, without the key the same say half slice; an unknown
+// section is refused as bad input (exit 2) naming the key.
+TEST_F(SimulateCel, HopperSectionReachesThePlanAndTheResults) {
+  const auto full = run_feedflow(kHopper + "--set cel.hopper_section=full --time 0.02s --out full", dir_);
+  ASSERT_EQ(full.exit_code, 0) << full.err;
+  EXPECT_NE(full.out.find("scene: wedge hopper, plane-strain full-width section (both walls, "
+                          "centre line x = 0.3 m)"), std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(dir_ / "full/results.json"));
+  for (const char* row : {"mass_flow_rate", "mass_flow_rate_per_metre"})
+    EXPECT_NE(j.at("results").at(row).at("model").get<std::string>().find("full-width section"),
+              std::string::npos) << row;
+  EXPECT_NE(j.dump().find("Plane strain full-width section, both walls ([cel] hopper_section = "
+                          "full)"), std::string::npos);
+  EXPECT_EQ(j.dump().find("half slice"), std::string::npos);
+  const auto half = run_feedflow(kHopper + "--time 0.02s --out half", dir_);
+  ASSERT_EQ(half.exit_code, 0) << half.err;
+  EXPECT_NE(half.out.find("plane-strain half slice"), std::string::npos);
+  const auto k = nlohmann::json::parse(slurp(dir_ / "half/results.json"));
+  EXPECT_NE(k.at("results").at("mass_flow_rate").at("model").get<std::string>().find("half slice"),
+            std::string::npos);
+  EXPECT_EQ(k.dump().find("full-width"), std::string::npos);
+  const auto bad = run_feedflow(kHopper + "--set cel.hopper_section=third --time 0.01s --out bad", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("cel.hopper_section"), std::string::npos);
+}
