@@ -5,8 +5,9 @@ namespace feedflow {
 namespace {
 constexpr std::string_view kNormalLaws[] = {"hysteretic_nonlinear2", "hysteretic_nonlinear1",
                                             "hertz", "hooke"};
-constexpr std::string_view kRemapOrders[] = {"first", "second", "second_stress",
-                                             "second_void_ratio", "second_density"};
+constexpr std::string_view kRemapOrders[] = {"first",           "second",
+                                             "second_stress",   "second_void_ratio",
+                                             "second_density",  "second_momentum"};
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
 constexpr std::string_view kHopperSections[] = {"half", "full"};
@@ -45,14 +46,15 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                Range::positive(), "time between field snapshots"),
       label_field<S>("remap_order", &S::remap_order, kRemapOrders,
-                     "advection of the cell state in the remap: first (donor cell, default), "
-                     "second (van Leer MUSCL on stress, void ratio and density), or second "
+                     "advection in the remap: first (donor cell, default), second (van Leer "
+                     "MUSCL on stress, void ratio, density and nodal momentum), or second "
                      "order on one quantity only (second_stress, second_void_ratio, "
-                     "second_density)",
+                     "second_density, second_momentum)",
                      Presence::optional),
       label_field<S>("material_flux", &S::material_flux, kMaterialFluxes,
-                     "material volume through the faces: donor_cell (default), limited (van "
-                     "Leer MUSCL volume fraction) or plic (Youngs interface in mixed cells)",
+                     "material volume through the faces: donor_cell (default; the drum: "
+                     "plic), limited (van Leer MUSCL volume fraction) or plic (Youngs "
+                     "interface in mixed cells)",
                      Presence::optional),
       label_field<S>("mixed_cells", &S::mixed_cells, kMixedCellRules,
                      "strain rate of the material in cells part filled with void: "

@@ -36,6 +36,7 @@ cel::RemapOptions cel_remap_options(const Case& c, cel::MaterialFlux scene_flux)
   o.second_order_stress = order == "second" || order == "second_stress";
   o.second_order_void_ratio = order == "second" || order == "second_void_ratio";
   o.second_order_density = order == "second" || order == "second_density";
+  o.second_order_momentum = order == "second" || order == "second_momentum";
   if (c.cel.material_flux == "donor_cell") o.material_flux = cel::MaterialFlux::donor_cell;
   if (c.cel.material_flux == "limited") o.material_flux = cel::MaterialFlux::limited;
   if (c.cel.material_flux == "plic") o.material_flux = cel::MaterialFlux::plic;
@@ -44,11 +45,13 @@ cel::RemapOptions cel_remap_options(const Case& c, cel::MaterialFlux scene_flux)
 
 std::string remap_text(const cel::RemapOptions& o) {
   std::string state = "first-order";
-  if (o.second_order_stress || o.second_order_void_ratio || o.second_order_density) {
+  if (o.second_order_stress || o.second_order_void_ratio || o.second_order_density ||
+      o.second_order_momentum) {
     state = "second-order (van Leer MUSCL:";
     if (o.second_order_stress) state += " stress";
     if (o.second_order_void_ratio) state += " void ratio";
     if (o.second_order_density) state += " density";
+    if (o.second_order_momentum) state += " momentum";
     state += ")";
   }
   const char* flux = o.material_flux == cel::MaterialFlux::plic      ? "PLIC (Youngs)"
@@ -60,7 +63,8 @@ std::string remap_text(const cel::RemapOptions& o) {
 
 std::string cel_model_label(const Case& c, cel::MaterialFlux scene_flux) {
   const cel::RemapOptions o = cel_remap_options(c, scene_flux);
-  const bool second = o.second_order_stress || o.second_order_void_ratio || o.second_order_density;
+  const bool second = o.second_order_stress || o.second_order_void_ratio ||
+                      o.second_order_density || o.second_order_momentum;
   std::string remap = second ? "second-order" : "donor-cell";
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
   if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";

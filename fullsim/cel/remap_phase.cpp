@@ -212,6 +212,9 @@ NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   const auto flux = [&](int m, int k) {
     return face_mass_flux_[static_cast<std::size_t>(m) * (n_along + 1) + k];
   };
+  const auto velocity_of = [&](std::size_t a) {
+    return node_mass_[a] > 0.0 ? NodeVector(node_momentum_[a] / node_mass_[a]) : NodeVector::Zero();
+  };
   // Node line `line` (0..n_across) takes half of cell lines line-1 and line; the dual face at the
   // centre of cell k carries half the sum of cell k's two primal face fluxes.
 #pragma omp parallel for schedule(static) if (g.cell_count() > 8192)
@@ -223,8 +226,22 @@ NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
       if (phi == 0.0) continue;
       const std::size_t lo = node_on_line(g, axis, k, line), hi = node_on_line(g, axis, k + 1, line);
       const std::size_t donor = phi > 0.0 ? lo : hi;
-      const NodeVector v = node_mass_[donor] > 0.0 ? NodeVector(node_momentum_[donor] / node_mass_[donor])
-                                                   : NodeVector::Zero();
+      NodeVector v = velocity_of(donor);
+      if (options_.second_order_momentum && node_mass_[donor] > 0.0) {
+        const int kd = phi > 0.0 ? k : k + 1;  // the donor's node index along the axis
+        if (kd >= 1 && kd + 1 <= n_along) {
+          const std::size_t below = node_on_line(g, axis, kd - 1, line);
+          const std::size_t above = node_on_line(g, axis, kd + 1, line);
+          if (node_mass_[below] > 0.0 && node_mass_[above] > 0.0) {
+            const NodeVector vb = velocity_of(below), va = velocity_of(above);
+            const double share = std::min(1.0, std::abs(phi) / node_mass_[donor]);
+            const double toward = phi > 0.0 ? 1.0 : -1.0;
+            for (int r = 0; r < kDimension; ++r)
+              v[r] = muscl_face_value(v[r], van_leer_difference(v[r] - vb[r], va[r] - v[r]),
+                                      share, toward);
+          }
+        }
+      }
       node_mass_delta_[lo] -= phi;
       node_mass_delta_[hi] += phi;
       node_momentum_delta_[lo] -= phi * v;

@@ -19,7 +19,9 @@
 // shared by the two dual lines the cell touches, so the advected nodal mass equals the mass lumped
 // from the remapped cells. Nodal momentum moves with these fluxes at the donor node's velocity
 // (donor cell): conservative, and the new velocity is a convex combination of old ones (no
-// overshoot at nodes that lose most of their mass).
+// overshoot at nodes that lose most of their mass); or, with `second_order_momentum`, at the
+// donor's van Leer limited MUSCL face velocity along the node line (still conservative; the
+// face value lies between the donor's and its downwind neighbour's).
 //
 // Grain-consistent volume (`set_grain_density`, used by CelSolver): a granular skeleton's volume
 // is fixed by its mass and void ratio, V_m = M (1 + e) / rho_g with the grain density rho_g =
@@ -50,11 +52,15 @@ struct RemapOptions {
   bool second_order_stress = false;
   bool second_order_void_ratio = false;
   bool second_order_density = false;
+  // Nodal momentum at van Leer MUSCL face velocities of the dual grid (between nodes that both
+  // carry mass; donor node velocity next to void and at the box faces).
+  bool second_order_momentum = false;
   MaterialFlux material_flux = MaterialFlux::donor_cell;
   // A neighbour takes part in a slope only above this volume fraction.
   double slope_volume_fraction = 1e-3;
 };
-// Second order for the whole cell state (stress, void ratio, density).
+// Second order for the whole cell state (stress, void ratio, density); the nodal momentum
+// stays donor cell (second_order_momentum is its own switch).
 RemapOptions second_order_state(RemapOptions o = {});
 
 struct RemapReport {

@@ -89,7 +89,8 @@ TEST_F(SimulateCel, RemapOptionsReachThePlanAndTheResults) {
                               dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("mixed cells: void first"), std::string::npos);
-  EXPECT_NE(r.out.find("remap: second-order (van Leer MUSCL: stress void ratio density) state, "
+  EXPECT_NE(r.out.find("remap: second-order (van Leer MUSCL: stress void ratio density "
+                       "momentum) state, "
                        "PLIC (Youngs) material flux"), std::string::npos);
   const auto j = nlohmann::json::parse(slurp(dir_ / "plic/results.json"));
   EXPECT_NE(j.at("results").at("mass_flow_rate").at("model").get<std::string>().find(
