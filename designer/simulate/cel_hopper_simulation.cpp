@@ -145,9 +145,9 @@ SimulationOutcome simulate_hopper_with_cel(const SimulationRequest& request) {
           " ([cel] remap_order, material_flux; the donor cell smears the free surface and the "
           "outlet jet); q_m from the exact outflow ledger. Cut cells fill whole: up to half a "
           "cell of material behind the walls.",
-      "q_m depends on the cell size more than on the remap: pilot hopper 7.2 kg/s at 10 mm cells "
-      "(outlet 3 cells across the half slot, flow still accelerating at 3 s) against 6.2 kg/s at "
-      "5 mm (steady); second order moves it by < 3 % at either size (fullsim/README.md).",
+      "q_m depends on the cell size: pilot hopper 6.21 kg/s at 10 mm cells (outlet 3 cells "
+      "across the half slot) against 5.75 kg/s at 5 mm; at 20 mm (1.5 cells) it arches "
+      "(fullsim/README.md).",
       "Gravity phase with dynamic relaxation (damping switched off at the opening); not physical, "
       "it only brings the fill to rest faster.",
       "\"arched\": rate over the last quarter below 2 % of rho W sqrt(g W); flow pattern: mass flow "
