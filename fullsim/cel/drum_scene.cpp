@@ -23,7 +23,7 @@ double fill_level(double r, double f) {
   return 0.5 * (lo + hi);
 }
 
-DrumSurface drum_surface(const CelSolver& solver, const DrumSection& section, double span) {
+FreeSurface drum_surface(const CelSolver& solver, const DrumSection& section, double span) {
   const PlaneStrainGrid& g = solver.grid();
   const double t = solver.time();
   const NodeVector down = solver.frame().gravity(solver.options().gravity, t).normalized();
@@ -34,7 +34,7 @@ DrumSurface drum_surface(const CelSolver& solver, const DrumSection& section, do
     if (i < 0 || j < 0 || i >= g.nx || j >= g.ny) return false;
     return solver.cells().volume_fraction[g.cell(i, j)] >= 0.5;
   };
-  DrumSurface f;
+  FreeSurface f;
   const double step = 0.25 * g.cell_size, r = section.radius;
   for (double s = -span * r; s <= span * r; s += 0.5 * g.cell_size) {
     // Up from the shell's lowest point on this line: the first filled point, then the first
@@ -45,23 +45,13 @@ DrumSurface drum_surface(const CelSolver& solver, const DrumSection& section, do
       const bool full = filled(section.centre + s * across + u * up);
       if (!in_bed && full) in_bed = true;
       if (in_bed && !full) {
-        f.across.push_back(s);
-        f.height.push_back(u - 0.5 * step);
+        f.x.push_back(s);
+        f.y.push_back(u - 0.5 * step);
         break;
       }
     }
   }
-  if (f.across.size() < 2) return f;
-  double ms = 0.0, mh = 0.0;
-  for (std::size_t k = 0; k < f.across.size(); ++k) ms += f.across[k], mh += f.height[k];
-  ms /= static_cast<double>(f.across.size());
-  mh /= static_cast<double>(f.across.size());
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = 0; k < f.across.size(); ++k) {
-    sxy += (f.across[k] - ms) * (f.height[k] - mh);
-    sxx += (f.across[k] - ms) * (f.across[k] - ms);
-  }
-  f.slope_angle = sxx > 0.0 ? std::abs(std::atan(sxy / sxx)) : 0.0;
+  f.slope_angle = fitted_slope_angle(f.x, f.y);
   return f;
 }
 

@@ -12,6 +12,7 @@
 // direction, over |s| <= span x R about the centre, its slope against the laboratory
 // horizontal.
 #include "fullsim/cel/cel_scene.hpp"
+#include "fullsim/cel/scene_measurements.hpp"
 #include "models/equipment/drum.hpp"
 
 namespace feedflow::cel {
@@ -27,11 +28,8 @@ DrumSection drum_section(const Drum& drum, double cell_size);
 // fraction f of its area [m].
 double fill_level(double radius, double fraction);
 
-struct DrumSurface {
-  std::vector<double> across, height;  // surface points: across and up the gravity [m]
-  double slope_angle = 0.0;            // of the least-squares line, |atan slope| [rad]
-};
-DrumSurface drum_surface(const CelSolver& solver, const DrumSection& section, double span);
+// The points are (across, up) the current gravity direction from the centre [m].
+FreeSurface drum_surface(const CelSolver& solver, const DrumSection& section, double span);
 
 // The frame the turn is solved in: the shell's (default) or the laboratory's (the shell turns
 // on the grid; kept for the wall-contact tests and for comparison).

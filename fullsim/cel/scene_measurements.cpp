@@ -80,15 +80,19 @@ FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max) {
     f.x.push_back(x);
     f.y.push_back(y0 + g.cell_size * (below - 0.5) / (below - here));
   }
-  const std::size_t n = f.x.size();
-  if (n < 2) return f;
-  double mx = 0.0, my = 0.0;
-  for (std::size_t k = 0; k < n; ++k) mx += f.x[k], my += f.y[k];
-  mx /= n, my /= n;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = 0; k < n; ++k) sxy += (f.x[k] - mx) * (f.y[k] - my), sxx += (f.x[k] - mx) * (f.x[k] - mx);
-  f.slope_angle = std::abs(std::atan(sxy / sxx));
+  f.slope_angle = fitted_slope_angle(f.x, f.y);
   return f;
+}
+
+double fitted_slope_angle(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n < 2) return 0.0;
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < n; ++k) mx += x[k], my += y[k];
+  mx /= static_cast<double>(n), my /= static_cast<double>(n);
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t k = 0; k < n; ++k) sxy += (x[k] - mx) * (y[k] - my), sxx += (x[k] - mx) * (x[k] - mx);
+  return sxx > 0.0 ? std::abs(std::atan(sxy / sxx)) : 0.0;
 }
 
 std::vector<double> column_thickness(const CelSolver& solver) {

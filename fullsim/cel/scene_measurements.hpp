@@ -35,6 +35,9 @@ struct FreeSurface {
 // at least half, the first crossing below half (material thrown above the bed is ignored).
 FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max);
 
+// |atan| of the least-squares slope of y(x) (0 below two points or without spread in x) [rad].
+double fitted_slope_angle(const std::vector<double>& x, const std::vector<double>& y);
+
 // Thickness sum_j h vf over each column (cell centres x, thickness) [m].
 std::vector<double> column_thickness(const CelSolver& solver);
 
