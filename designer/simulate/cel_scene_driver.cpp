@@ -65,7 +65,8 @@ std::string cel_model_label(const Case& c, cel::MaterialFlux scene_flux) {
   const cel::RemapOptions o = cel_remap_options(c, scene_flux);
   const bool second = o.second_order_stress || o.second_order_void_ratio ||
                       o.second_order_density || o.second_order_momentum;
-  std::string remap = second ? "second-order" : "donor-cell";
+  const bool donor_cell = o.material_flux == cel::MaterialFlux::donor_cell;
+  std::string remap = second ? "second-order" : donor_cell ? "donor-cell" : "first-order";
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
   if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";
   if (c.cel.mixed_cells == "void_first") remap += ", void-first mixed cells";
