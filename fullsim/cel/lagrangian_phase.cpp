@@ -44,7 +44,7 @@ CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
   int most = 0, unconverged = 0;
   const auto n_active = static_cast<long>(active_cells.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : most) reduction(+ : unconverged) \
-    if (n_active > 1024)
+    if (n_active > kParallelThreshold)
   for (long k = 0; k < n_active; ++k) {
     const std::size_t c = active_cells[static_cast<std::size_t>(k)];
     const auto nodes_of = grid.cell_nodes(c);

@@ -18,7 +18,10 @@ void for_each_cell_around(const PlaneStrainGrid& g, int i, int j, Visit&& visit)
 }  // namespace
 
 void lump_nodal_mass(const PlaneStrainGrid& grid, const CellFields& cells, NodeFields& nodes) {
-  for (std::size_t a = 0; a < grid.node_count(); ++a) {
+  const auto n_nodes = static_cast<long>(grid.node_count());
+#pragma omp parallel for schedule(static) if (n_nodes > kParallelThreshold)
+  for (long k = 0; k < n_nodes; ++k) {
+    const auto a = static_cast<std::size_t>(k);
     double m = 0.0;
     for_each_cell_around(grid, grid.node_i(a), grid.node_j(a),
                          [&](std::size_t c, int) { m += cells.mass[c]; });
@@ -43,7 +46,7 @@ void assemble_nodal_forces(const PlaneStrainGrid& grid, const std::vector<std::s
   const double v_cell = grid.cell_volume();
   std::fill(cells.corner_force.begin(), cells.corner_force.end(), NodeVector::Zero());
   const auto n_active = static_cast<long>(active_cells.size());
-#pragma omp parallel for schedule(static) if (n_active > 8192)
+#pragma omp parallel for schedule(static) if (n_active > kParallelThreshold)
   for (long k = 0; k < n_active; ++k) {
     const std::size_t c = active_cells[static_cast<std::size_t>(k)];
     const double vf = cells.volume_fraction[c];
@@ -61,7 +64,7 @@ void assemble_nodal_forces(const PlaneStrainGrid& grid, const std::vector<std::s
       cells.corner_force[c * kNodesPerCell + a] = f[a] - c_hg * kHourglass[a] * hg;
   }
   const auto n_nodes = static_cast<long>(grid.node_count());
-#pragma omp parallel for schedule(static) if (n_nodes > 8192)
+#pragma omp parallel for schedule(static) if (n_nodes > kParallelThreshold)
   for (long k = 0; k < n_nodes; ++k) {
     const auto a = static_cast<std::size_t>(k);
     NodeVector f = nodes.mass[a] * gravity;

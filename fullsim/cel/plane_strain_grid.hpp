@@ -11,6 +11,9 @@ namespace feedflow::cel {
 
 inline constexpr int kDimension = 2;
 inline constexpr int kNodesPerCell = 4;
+// Loops over cells or nodes run on OpenMP threads above this many items (each item's result
+// is independent of the thread count: the runs are the same bits on any number of threads).
+inline constexpr long kParallelThreshold = 1024;
 using NodeVector = Eigen::Vector2d;
 
 struct PlaneStrainGrid {

@@ -76,7 +76,10 @@ void RemapPhase::refresh_cell_state(const PlaneStrainGrid& g, const CellFields& 
   e_.resize(n);
   stress_.resize(n);
   slope_cell_.resize(n);
-  for (std::size_t c = 0; c < n; ++c) {
+  const auto cells_n = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (cells_n > kParallelThreshold)
+  for (long k = 0; k < cells_n; ++k) {
+    const auto c = static_cast<std::size_t>(k);
     const double vm = now_.material_volume[c];
     const bool filled = vm > 0.0 && now_.mass[c] > 0.0 && now_.volume[c] > 0.0;
     vf_[c] = filled ? vm / now_.volume[c] : 0.0;
@@ -138,7 +141,7 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
   double worst = 0.0, outflow = 0.0;
   // Lines across the sweep direction are independent: each touches its own cells only.
 #pragma omp parallel for schedule(static) reduction(max : worst) reduction(+ : outflow) \
-    if (g.cell_count() > 8192)
+    if (g.cell_count() > kParallelThreshold)
   for (int m = 0; m < n_across; ++m) {
     const auto cell_at = [&](int k) {
       if (k < 0 || k >= n_along) return kOutside;
@@ -187,8 +190,10 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
       if (f.lo == kOutside || f.hi == kOutside) outflow += dm;
     }
   }
-  const std::size_t n = g.cell_count();
-  for (std::size_t c = 0; c < n; ++c) {
+  const auto cells_n = static_cast<long>(g.cell_count());
+#pragma omp parallel for schedule(static) if (cells_n > kParallelThreshold)
+  for (long k = 0; k < cells_n; ++k) {
+    const auto c = static_cast<std::size_t>(k);
     now_.volume[c] += delta_.volume[c];
     now_.material_volume[c] += delta_.material_volume[c];
     now_.mass[c] += delta_.mass[c];
@@ -217,7 +222,7 @@ NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   };
   // Node line `line` (0..n_across) takes half of cell lines line-1 and line; the dual face at the
   // centre of cell k carries half the sum of cell k's two primal face fluxes.
-#pragma omp parallel for schedule(static) if (g.cell_count() > 8192)
+#pragma omp parallel for schedule(static) if (g.cell_count() > kParallelThreshold)
   for (int line = 0; line <= n_across; ++line) {
     for (int k = 0; k < n_along; ++k) {
       double phi = 0.0;
@@ -265,7 +270,10 @@ NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
       outflow += p;
     }
   }
-  for (std::size_t a = 0; a < g.node_count(); ++a) {
+  const auto nodes_n = static_cast<long>(g.node_count());
+#pragma omp parallel for schedule(static) if (nodes_n > kParallelThreshold)
+  for (long k = 0; k < nodes_n; ++k) {
+    const auto a = static_cast<std::size_t>(k);
     node_mass_[a] += node_mass_delta_[a];
     node_momentum_[a] += node_momentum_delta_[a];
   }
@@ -295,7 +303,10 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
         if (f.hi != kOutside) now_.volume[f.hi] -= dv;
       }
   }
-  for (std::size_t c = 0; c < n; ++c) {
+  const auto cells_n = static_cast<long>(n);
+#pragma omp parallel for schedule(static) if (cells_n > kParallelThreshold)
+  for (long k = 0; k < cells_n; ++k) {
+    const auto c = static_cast<std::size_t>(k);
     now_.mass[c] = cells.mass[c];
     now_.void_mass[c] = cells.void_ratio[c] * cells.mass[c];
     now_.material_volume[c] = grain_density_ > 0.0 ? grain_volume(c)
@@ -318,17 +329,23 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
     report.outflow_momentum += sweep_momentum(g, axis);
   }
 
-  report.largest_volume_fraction = 0.0;
-  report.smallest_volume_fraction = 1.0;
-  for (std::size_t c = 0; c < n; ++c) {
+  // Per cell in parallel; the cut-off mass is summed afterwards in cell order (the same bits
+  // on any number of threads).
+  double largest = 0.0, smallest = 1.0;
+  int compacted = 0, overpacked = 0;
+  cut_off_.assign(n, 0.0);
+#pragma omp parallel for schedule(static) reduction(max : largest) reduction(min : smallest) \
+    reduction(+ : compacted, overpacked) if (cells_n > kParallelThreshold)
+  for (long k = 0; k < cells_n; ++k) {
+    const auto c = static_cast<std::size_t>(k);
     const double vm = now_.material_volume[c];
     const double vf = vm / v0;
     if (!cells.solid[c]) {
-      report.largest_volume_fraction = std::max(report.largest_volume_fraction, vf);
-      report.smallest_volume_fraction = std::min(report.smallest_volume_fraction, vf);
+      largest = std::max(largest, vf);
+      smallest = std::min(smallest, vf);
     }
     if (vf < cut_ || vm <= 0.0 || now_.mass[c] <= 0.0) {
-      report.removed_mass += now_.mass[c];
+      cut_off_[c] = now_.mass[c];
       cells.volume_fraction[c] = 0.0;
       cells.mass[c] = 0.0;
       cells.stress[c].setZero();
@@ -343,10 +360,15 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
       const double fit = grain_density_ * v0 / now_.mass[c] - 1.0;
       const double densest = densest_.void_ratio(cells.stress[c]);
       cells.void_ratio[c] = std::max(fit, densest);
-      ++report.compacted_cells;
-      if (fit < densest) ++report.overpacked_cells;
+      ++compacted;
+      if (fit < densest) ++overpacked;
     }
   }
+  report.largest_volume_fraction = largest;
+  report.smallest_volume_fraction = smallest;
+  report.compacted_cells = compacted;
+  report.overpacked_cells = overpacked;
+  for (double m : cut_off_) report.removed_mass += m;
 
   lump_nodal_mass(g, cells, nodes);
   for (std::size_t a = 0; a < nn; ++a) {

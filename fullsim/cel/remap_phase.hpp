@@ -134,6 +134,7 @@ class RemapPhase {
   std::vector<double> vf_, rho_, e_;
   std::vector<Eigen::Matrix3d> stress_;
   std::vector<std::uint8_t> slope_cell_;
+  std::vector<double> cut_off_;         // mass removed per cell by the cut, this remap [kg/m]
   std::vector<double> face_mass_flux_;  // of the last sweep, per line (n_along + 1 faces) [kg/m]
   std::vector<double> node_mass_, node_mass_delta_;
   std::vector<NodeVector> node_momentum_, node_momentum_delta_;
