@@ -112,9 +112,12 @@ CelStepReport CelSolver::step() {
     s << "CEL blow-up at step " << steps_ << ", t = " << time_ << " s, cell ("
       << grid_.cell_i(c) << ", " << grid_.cell_j(c) << "): no finite wave speed (void ratio "
       << cells_.void_ratio[c] << ", density " << cells_.density(c, grid_.cell_volume())
-      << " kg/m^3, pressure " << -cells_.stress[c].trace() / 3.0 << " Pa); the last step was "
-      << dt_previous_ << " s, try a time step below " << 0.5 * dt_previous_
-      << " s (time_step.safety " << 0.5 * options_.time_step.safety << ")";
+      << " kg/m^3, pressure " << -cells_.stress[c].trace() / 3.0 << " Pa)";
+    if (dt_previous_ > 0.0)
+      s << "; the last step was " << dt_previous_ << " s, try a time step below "
+        << 0.5 * dt_previous_ << " s (time_step.safety " << 0.5 * options_.time_step.safety << ")";
+    else
+      s << " in the initial state (check the material block's density, void ratio and stress)";
     throw NumericalFailure(s.str());
   }
   const double dt = report.time_step.dt;
