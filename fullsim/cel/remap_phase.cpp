@@ -173,7 +173,9 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
           const auto face_value = [&](double d, double lo, double hi) {
             return muscl_face_value(d, van_leer_difference(d - lo, hi - d), share, toward);
           };
-          if (options_.second_order_density) rho = face_value(rho, rho_[below], rho_[above]);
+          // In grain-consistent mode the density follows e: no face value of its own.
+          if (options_.second_order_density && grain_density_ <= 0.0)
+            rho = face_value(rho, rho_[below], rho_[above]);
           if (options_.second_order_void_ratio) e = face_value(e, e_[below], e_[above]);
           if (options_.second_order_stress)
             for (int r = 0; r < 3; ++r)

@@ -1,7 +1,9 @@
 // The Lagrangian phase on its own: patch tests of the one-point quadrilateral (models.md 2.3).
 #include <gtest/gtest.h>
 
+
 #include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/lagrangian_phase.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
 #include "fullsim/cel/quad_cell.hpp"
 
@@ -75,6 +77,32 @@ TEST(CelLagrangianPatch, UniformStressInEquilibrium) {
   const NodeVector f = p.nodes.force[p.grid.node(5, 2)];
   EXPECT_NEAR(f.x(), -t(0, 0) * 0.02, 1e-9);
   EXPECT_NEAR(f.y(), -t(1, 0) * 0.02, 1e-9);
+}
+
+// The mixed-cell rules (models.md 2.3 item 7): equal strain rate hands the material the cell's
+// rate; void first gives a half-filled cell's material no volume change while the cell grows or
+// shrinks within its void (the shear kept), and when a nearly full cell shrinks by more than
+// its void, the rate that makes the material fill the new cell volume exactly.
+TEST(CelMixedCells, VoidTakesTheVolumeChangeFirst) {
+  Eigen::Matrix3d d = Eigen::Matrix3d::Zero();
+  d(0, 0) = 3.0;
+  d(1, 1) = 1.0;
+  d(0, 1) = d(1, 0) = 0.5;
+  const double dt = 1e-3;
+  EXPECT_TRUE(material_rate_of_deformation(d, 0.5, dt, MixedCellRule::equal_strain_rate) == d);
+  EXPECT_TRUE(material_rate_of_deformation(d, 1.0, dt, MixedCellRule::void_first) == d);
+  const Eigen::Matrix3d grow = material_rate_of_deformation(d, 0.5, dt, MixedCellRule::void_first);
+  EXPECT_NEAR(grow(0, 0) + grow(1, 1), 0.0, 1e-12);
+  EXPECT_NEAR(grow(0, 0) - grow(1, 1), 2.0, 1e-12);  // deviatoric part kept
+  EXPECT_EQ(grow(0, 1), 0.5);
+  const Eigen::Matrix3d slight = material_rate_of_deformation(-d, 0.5, dt, MixedCellRule::void_first);
+  EXPECT_NEAR(slight(0, 0) + slight(1, 1), 0.0, 1e-12);  // -0.4 % of the cell: the void's
+  const double vf = 0.999, shrink = -0.25 / dt;  // the cell loses 25 %, its void only 0.1 %
+  Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+  c(0, 0) = c(1, 1) = 0.5 * shrink;
+  const Eigen::Matrix3d m = material_rate_of_deformation(c, vf, dt, MixedCellRule::void_first);
+  // The material volume vf V (1 + tr D_m dt) equals the new cell volume V (1 + tr D dt).
+  EXPECT_NEAR(vf * (1.0 + (m(0, 0) + m(1, 1)) * dt), 1.0 + shrink * dt, 1e-12);
 }
 
 }  // namespace
