@@ -1,5 +1,6 @@
 // feedflow: design checks and verification simulations for bulk-solids handling equipment.
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <iostream>
 
 #include "designer/cli/commands.hpp"
@@ -48,6 +49,12 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "feedflow: internal error: " << e.what() << '\n';
     return 1;
+  }
+  // Text that never reached stdout (a full disk, a closed pipe) is an error, not a success.
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    std::cerr << "feedflow: error: cannot write to stdout (full disk or closed pipe?); the output is lost\n";
+    return exit_code == kExitOk ? kExitBadInput : exit_code;
   }
   return exit_code;
 }

@@ -9,6 +9,7 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
+#include "designer/cli/output_files.hpp"
 #include "models/core/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -47,7 +48,7 @@ int list_cases(const CasesArguments& args) {
     if (args.options.human_output())
       std::printf("%-36s %-7s %s\n", file.string().c_str(), s.kind.c_str(), s.description.c_str());
   }
-  if (args.options.json_to_stdout()) std::cout << json.dump(2) << '\n';
+  write_json_copy(json.dump(2) + "\n", args.options);
   return 0;
 }
 
@@ -57,8 +58,8 @@ void add_cases_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CasesArguments>();
   auto* command = app.add_subcommand("cases", "list the case files with a one-line description each");
   command->add_option("--dir", args->folder, "folder to list (default: ./cases)")->type_name("DIR");
-  add_json_option(*command, args->options);
-  add_verbosity_options(*command, args->options);
+  add_json_option(*command, args->options, "the case list as JSON");
+  add_verbosity_options(*command, args->options, true);
   command->callback([args, &exit_code] { exit_code = list_cases(*args); });
 }
 

@@ -2,31 +2,31 @@
 
 namespace feedflow {
 
-void add_verbosity_options(CLI::App& command, CommandOptions& options) {
+void add_verbosity_options(CLI::App& command, CommandOptions& options, bool has_json) {
   auto* quiet = command.add_flag("-q,--quiet", options.quiet,
-                                 "print nothing but errors and what --json sends to stdout");
+                                 has_json ? "print nothing but errors and what --json - sends to stdout"
+                                          : "print nothing but errors");
   command.add_flag("-v,--verbose", options.verbose, "say more about what is done and where")
       ->excludes(quiet);
 }
 
-void add_json_option(CLI::App& command, CommandOptions& options) {
+void add_json_option(CLI::App& command, CommandOptions& options, const std::string& what) {
   command.add_option("--json", options.json,
-                     "also write the results JSON to FILE; '-' writes it to stdout and nothing "
-                     "else goes there")
+                     "also write " + what + " to FILE; '-' writes it to stdout and nothing else goes there")
       ->type_name("FILE");
 }
 
-void add_case_options(CLI::App& command, CommandOptions& options) {
+void add_case_options(CLI::App& command, CommandOptions& options, const std::string& default_folder) {
   command.add_option("--set", options.sets,
                      "override a case value, units allowed (repeatable): "
                      "--set hopper.semi_angle=32deg")
       ->type_name("KEY=VALUE")
       ->take_all()
       ->allow_extra_args(false);
-  add_json_option(command, options);
-  command.add_option("--out", options.out, "output folder (default: out/<case name>)")
+  add_json_option(command, options, "the results JSON");
+  command.add_option("--out", options.out, "output folder (default: " + default_folder + ")")
       ->type_name("DIR");
-  add_verbosity_options(command, options);
+  add_verbosity_options(command, options, true);
 }
 
 }  // namespace feedflow

@@ -10,7 +10,7 @@ namespace feedflow {
 struct CommandOptions {
   std::vector<std::string> sets;  // "key=value", in order
   std::string json;               // file for the results JSON; "-" is stdout
-  std::string out;                // output folder; empty = out/<case name>
+  std::string out;                // output folder; empty = the command's default
   bool quiet = false;
   bool verbose = false;
 
@@ -19,8 +19,11 @@ struct CommandOptions {
   bool human_output() const { return !quiet && !json_to_stdout(); }
 };
 
-void add_verbosity_options(CLI::App& command, CommandOptions& options);
-void add_json_option(CLI::App& command, CommandOptions& options);
-void add_case_options(CLI::App& command, CommandOptions& options);  // all of the above + --set, --out
+// -q and -v; `has_json`: the command has --json (whose '-' copy -q keeps).
+void add_verbosity_options(CLI::App& command, CommandOptions& options, bool has_json);
+// --json FILE; `what` names what is written: "the results JSON".
+void add_json_option(CLI::App& command, CommandOptions& options, const std::string& what);
+// All of the above + --set and --out; `default_folder` says where --out defaults to.
+void add_case_options(CLI::App& command, CommandOptions& options, const std::string& default_folder);
 
 }  // namespace feedflow

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
@@ -41,14 +42,16 @@ int run_design(const DesignArguments& args) {
   record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const std::filesystem::path folder =
-      args.options.out.empty() ? std::filesystem::path("out") / c.name
-                               : std::filesystem::path(args.options.out);
+  const auto folder = output_folder(args.options, c.name, "", args.report);
   const std::string summary = text_summary(record);
   const std::string json = to_json(record).dump(2) + "\n";
-  auto written = write_run_outputs(folder, json, summary, args.options);
+  auto files = results_files(folder, json, summary, args.options);
   if (args.report)
-    for (auto& file : write_report_files(folder, record)) written.push_back(std::move(file));
+    for (auto& file : report_files(*folder, record)) files.push_back(std::move(file));
+  std::optional<OutputFolder> claimed;
+  if (folder) claimed.emplace(*folder, "--out");
+  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,
+                                     args.options.verbose, claimed ? &*claimed : nullptr);
 
   if (args.options.human_output()) {
     std::cout << summary << "\nWritten: ";
@@ -68,7 +71,8 @@ void add_design_command(CLI::App& app, int& exit_code) {
   command->add_option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
       ->required()
       ->type_name("CASE");
-  add_case_options(*command, args->options);
+  add_case_options(*command, args->options,
+                   "out/<case name>; none with --json - unless --report asks for one");
   command->add_flag("--report", args->report, "also write report.pdf and report.html");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {

@@ -7,12 +7,14 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "designer/case/material_library.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
-#include "fullsim/common/atomic_file.hpp"
+#include "designer/cli/output_files.hpp"
+#include "designer/cli/output_folder.hpp"
 #include "models/core/errors.hpp"
 #include "models/hypoplastic/element_tests.hpp"
 #include "models/hypoplastic/stress_invariants.hpp"
@@ -116,9 +118,7 @@ int run_element_test_command(const ElementTestArguments& args) {
   const ElementTestSummary s = summarize_element_test(model, setup, path);
 
   const std::string test_name(element_test_name(*kind));
-  const std::filesystem::path folder =
-      args.options.out.empty() ? std::filesystem::path("out") / ("element_test_" + test_name)
-                               : std::filesystem::path(args.options.out);
+  const auto folder = output_folder(args.options, "element_test_" + test_name, "", false);
   constexpr double deg = 180.0 / std::numbers::pi;
   nlohmann::ordered_json j;
   j["material"] = material.name;
@@ -141,15 +141,17 @@ int run_element_test_command(const ElementTestArguments& args) {
   };
   j["path_csv"] = "element_test.csv";
   const std::string json = j.dump(2) + "\n";
-  try {
-    write_file_atomically(folder / "element_test.csv", path_csv(path));
-    write_file_atomically(folder / "summary.json", json);
-    if (!args.options.json.empty() && !args.options.json_to_stdout())
-      write_file_atomically(args.options.json, json);
-  } catch (const std::runtime_error& e) {
-    throw InputError("--out", "", e.what());
+  std::vector<OutputFile> files;
+  if (folder) {
+    files.push_back({*folder / "element_test.csv", path_csv(path), "--out"});
+    files.push_back({*folder / "summary.json", json, "--out"});
   }
-  if (args.options.json_to_stdout()) std::cout << json;
+  if (!args.options.json.empty() && !args.options.json_to_stdout())
+    files.push_back({args.options.json, json, "--json"});
+  std::optional<OutputFolder> claimed;
+  if (folder) claimed.emplace(*folder, "--out");
+  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,
+                                     args.options.verbose, claimed ? &*claimed : nullptr);
   if (args.options.human_output()) {
     std::cout << "Element test " << test_name << " of " << material.name << " (" << args.variant
               << "), from p0 = " << format_quantity(p0, "kPa") << ", e0 = " << format_number(e0)
@@ -164,8 +166,10 @@ int run_element_test_command(const ElementTestArguments& args) {
               << "  K0 at the start           " << format_number(s.at_rest_ratio) << "\n"
               << "  start tangent stiffness   " << format_quantity(s.initial_stiffness, "kPa")
               << " (" << s.stiffness_name << ")\n"
-              << "Written: " << (folder / "element_test.csv").string() << ", "
-              << (folder / "summary.json").string() << "\n";
+              << "Written: ";
+    for (std::size_t i = 0; i < written.size(); ++i)
+      std::cout << (i ? ", " : "") << written[i].string();
+    std::cout << '\n';
   }
   return 0;
 }
@@ -195,10 +199,10 @@ void add_element_test_command(CLI::App& app, int& exit_code) {
       ->type_name("NAME");
   command->add_option("--cycles", args->cycles, "cycles of cyclic_oedometric (default 3)");
   command->add_option("--samples", args->samples, "output points per loading stage (default 200)");
-  add_json_option(*command, args->options);
-  command->add_option("--out", args->options.out, "output folder (default out/element_test_<test>)")
+  add_json_option(*command, args->options, "the summary JSON");
+  command->add_option("--out", args->options.out, "output folder (default out/element_test_<test>; none with --json -)")
       ->type_name("DIR");
-  add_verbosity_options(*command, args->options);
+  add_verbosity_options(*command, args->options, true);
   command->callback([args, &exit_code] { exit_code = run_element_test_command(*args); });
 }
 

@@ -7,6 +7,7 @@
 #include "designer/case/material_library.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
+#include "designer/cli/output_files.hpp"
 #include "designer/design/case_inputs.hpp"
 
 namespace feedflow {
@@ -19,14 +20,11 @@ struct MaterialsArguments {
 
 void list_materials(const MaterialLibrary& library, const CommandOptions& options) {
   const auto entries = library.list();
-  if (options.json_to_stdout()) {
-    nlohmann::ordered_json j = nlohmann::ordered_json::array();
-    for (const auto& e : entries)
-      j.push_back({{"name", e.name}, {"origin", e.origin}, {"description", e.description}});
-    std::cout << j.dump(2) << '\n';
-    return;
-  }
-  if (options.quiet) return;
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const auto& e : entries)
+    j.push_back({{"name", e.name}, {"origin", e.origin}, {"description", e.description}});
+  write_json_copy(j.dump(2) + "\n", options);
+  if (!options.human_output()) return;
   std::printf("%-20s %-44s %s\n", "NAME", "ORIGIN", "DESCRIPTION");
   for (const auto& e : entries)
     std::printf("%-20s %-44s %s\n", e.name.c_str(), e.origin.c_str(), e.description.c_str());
@@ -36,20 +34,17 @@ void show_material(const MaterialLibrary& library, const std::string& name,
                    const CommandOptions& options) {
   const Material m = library.load(name);
   const auto parameters = material_parameters(m);
-  if (options.json_to_stdout()) {
-    nlohmann::ordered_json j{{"name", m.name}, {"description", m.description}, {"origin", m.origin}};
-    auto& p = j["parameters"] = nlohmann::ordered_json::object();
-    for (const auto& row : parameters) {
-      nlohmann::ordered_json value;
-      std::visit([&](const auto& v) { value = v; }, row.value.value);
-      p[row.value.key] = {{"value", value}, {"unit", row.value.si_unit},
-                          {"display", row.value.display}, {"description", row.description},
-                          {"source", row.value.source}};
-    }
-    std::cout << j.dump(2) << '\n';
-    return;
+  nlohmann::ordered_json j{{"name", m.name}, {"description", m.description}, {"origin", m.origin}};
+  auto& p = j["parameters"] = nlohmann::ordered_json::object();
+  for (const auto& row : parameters) {
+    nlohmann::ordered_json value;
+    std::visit([&](const auto& v) { value = v; }, row.value.value);
+    p[row.value.key] = {{"value", value}, {"unit", row.value.si_unit},
+                        {"display", row.value.display}, {"description", row.description},
+                        {"source", row.value.source}};
   }
-  if (options.quiet) return;
+  write_json_copy(j.dump(2) + "\n", options);
+  if (!options.human_output()) return;
   std::cout << m.name << ": " << m.description << "\norigin: " << m.origin << "\n";
   std::string section;
   for (const auto& row : parameters) {
@@ -72,8 +67,9 @@ void add_materials_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand(
       "materials", "list the known materials, or show every parameter of one with unit and source");
   command->add_option("name", args->name, "material to show, e.g. loblolly_pine")->type_name("NAME");
-  add_json_option(*command, args->options);
-  add_verbosity_options(*command, args->options);
+  add_json_option(*command, args->options,
+                  "the material list (or the named material's parameters) as JSON");
+  add_verbosity_options(*command, args->options, true);
   command->callback([args, &exit_code] {
     const auto library = MaterialLibrary::standard();
     if (args->options.verbose)

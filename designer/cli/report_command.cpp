@@ -1,4 +1,4 @@
-// feedflow report <results.json | run.h5>: the design report of an earlier run.
+// feedflow report <results.json>: the design report of an earlier design or simulate run.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -7,6 +7,7 @@
 
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
+#include "designer/cli/output_files.hpp"
 #include "designer/cli/report_files.hpp"
 #include "models/core/errors.hpp"
 #include "reports/results_json.hpp"
@@ -25,9 +26,12 @@ int run_report(const ReportArguments& args) {
   const fs::path input(args.input);
   std::error_code ec;
   if (!fs::is_regular_file(input, ec)) throw InputError(args.input, "", "no such file");
-  if (input.extension() == ".h5")
-    throw NotAvailable("reports from simulation runs (" + args.input +
-                       ") come with the DEM and CEL-FEM solvers; not yet available in this build");
+  if (input.extension() == ".h5") {
+    const fs::path results = input.parent_path() / "results.json";
+    throw NotAvailable("a report straight from a simulation's HDF5 file (" + args.input +
+                       ") is not available; make it from the run's results JSON: feedflow report " +
+                       results.string());
+  }
   DesignRecord record;
   try {
     std::ifstream in(input);
@@ -38,7 +42,7 @@ int run_report(const ReportArguments& args) {
     throw InputError(args.input, "", std::string("not a feedflow results file: ") + e.what());
   }
   const fs::path folder = args.options.out.empty() ? input.parent_path() : fs::path(args.options.out);
-  const auto written = write_report_files(folder, record);
+  const auto written = write_outputs(report_files(folder, record), nullptr, args.options.verbose, nullptr);
   if (!args.options.quiet) {
     std::cout << "Written: ";
     for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
@@ -52,13 +56,13 @@ int run_report(const ReportArguments& args) {
 void add_report_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ReportArguments>();
   auto* command = app.add_subcommand(
-      "report", "write the PDF and HTML design report of a results JSON (or, later, a run)");
-  command->add_option("input", args->input, "results.json written by design (or run.h5)")
+      "report", "write the PDF and HTML design report of a results JSON (from design or simulate)");
+  command->add_option("input", args->input, "results.json written by design or simulate")
       ->required()
       ->type_name("FILE");
   command->add_option("--out", args->options.out, "output folder (default: the input's folder)")
       ->type_name("DIR");
-  add_verbosity_options(*command, args->options);
+  add_verbosity_options(*command, args->options, false);
   command->callback([args, &exit_code] { exit_code = run_report(*args); });
 }
 

@@ -2,11 +2,8 @@
 
 #include <chrono>
 #include <ctime>
-#include <stdexcept>
 
 #include "designer/design/hopper_snapshot.hpp"
-#include "fullsim/common/atomic_file.hpp"
-#include "models/core/errors.hpp"
 #include "reports/document/report_content.hpp"
 #include "reports/document/report_html.hpp"
 #include "reports/document/report_pdf.hpp"
@@ -25,20 +22,12 @@ std::string utc_now() {
 
 }  // namespace
 
-std::vector<std::filesystem::path> write_report_files(const std::filesystem::path& folder,
-                                                      const DesignRecord& record) {
+std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record) {
   std::vector<ReportImage> pictures;
   if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));
   const ReportContent content = design_report_content(record, pictures, utc_now());
-  const auto pdf = folder / "report.pdf";
-  const auto html = folder / "report.html";
-  try {
-    write_report_pdf(content, pdf);
-    write_file_atomically(html, report_html(content));
-  } catch (const std::runtime_error& e) {
-    throw InputError("--out", "", e.what());
-  }
-  return {pdf, html};
+  return {{folder / "report.pdf", render_report_pdf(content).bytes, "--out"},
+          {folder / "report.html", report_html(content), "--out"}};
 }
 
 }  // namespace feedflow

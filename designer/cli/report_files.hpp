@@ -1,14 +1,14 @@
 #pragma once
-// Writing the design report of a record: report.pdf and report.html in a folder.
+// The design report of a record: report.pdf and report.html for a folder, to be written with
+// the other output files all or none (designer/cli/output_files.hpp).
 #include <filesystem>
 #include <vector>
 
+#include "designer/cli/output_files.hpp"
 #include "models/core/design_record.hpp"
 
 namespace feedflow {
 
-// Returns the files written.
-std::vector<std::filesystem::path> write_report_files(const std::filesystem::path& folder,
-                                                      const DesignRecord& record);
+std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record);
 
 }  // namespace feedflow

@@ -14,11 +14,11 @@
 #include "designer/cli/exit_codes.hpp"
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/output_files.hpp"
+#include "designer/cli/output_folder.hpp"
 #include "designer/design/case_inputs.hpp"
 #include "designer/simulate/cel_simulation.hpp"
 #include "designer/simulate/dem_simulation.hpp"
 #include "designer/simulate/solver_choice.hpp"
-#include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/interrupt_request.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/quantity_parser.hpp"
@@ -36,11 +36,6 @@ struct SimulateArguments {
   std::string time;     // "2 s"; empty: the scene's own end
   std::string restart;  // checkpoint file
 };
-
-std::filesystem::path output_folder(const SimulateArguments& args, const Case& c, Solver solver) {
-  if (!args.options.out.empty()) return args.options.out;
-  return std::filesystem::path("out") / (c.name + "_" + to_string(solver));
-}
 
 int run_simulate(const SimulateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
@@ -69,17 +64,13 @@ int run_simulate(const SimulateArguments& args) {
   request.case_data = c;
   request.solver = choice.solver;
   request.end_time = end_time;
-  request.out = output_folder(args, c, choice.solver);
+  // A run writes its snapshots and checkpoint as it goes: it needs a folder even with --json -.
+  request.out = *output_folder(args.options, c.name, std::string("_") + to_string(choice.solver), true);
   request.restart = args.restart;
   request.progress = !args.options.quiet && isatty(STDERR_FILENO);
   request.log = args.options.human_output() ? &std::cout : nullptr;
   if (request.log) std::cout << std::unitbuf;  // a run logged to a file shows its phases as they come
-  const bool folder_is_new = !std::filesystem::exists(request.out);
-  try {
-    std::filesystem::create_directories(request.out);
-  } catch (const std::filesystem::filesystem_error& e) {
-    throw InputError("--out", "", std::string("cannot create the output folder: ") + e.what());
-  }
+  OutputFolder folder(request.out, "--out");  // created and locked until the run ends
   if (request.log) *request.log << "feedflow simulate: " << choice.reason << '\n';
 
   install_interrupt_handler();
@@ -87,9 +78,7 @@ int run_simulate(const SimulateArguments& args) {
   try {
     outcome = choice.solver == Solver::dem ? simulate_with_dem(request) : simulate_with_cel(request);
   } catch (...) {
-    std::error_code ignored;  // a run that failed before writing anything leaves no empty folder
-    if (folder_is_new && std::filesystem::is_empty(request.out, ignored))
-      std::filesystem::remove(request.out, ignored);
+    folder.discard_if_unused();  // a run that failed before writing anything leaves no folder
     throw;
   }
   DesignRecord& record = outcome.record;
@@ -101,12 +90,10 @@ int run_simulate(const SimulateArguments& args) {
 
   const std::string summary = text_summary(record);
   const std::string json = to_json(record).dump(2) + "\n";
-  auto written = write_run_outputs(request.out, json, summary, args.options);
-  if (!outcome.series.empty()) {
-    const auto csv = request.out / "timeseries.csv";
-    write_file_atomically(csv, to_csv(outcome.series));
-    written.push_back(csv);
-  }
+  auto files = results_files(request.out, json, summary, args.options);
+  if (!outcome.series.empty()) files.push_back({request.out / "timeseries.csv", to_csv(outcome.series), "--out"});
+  auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr, args.options.verbose,
+                               &folder);
   for (auto& f : outcome.files) written.push_back(std::move(f));
 
   if (args.options.human_output()) {
@@ -145,7 +132,7 @@ void add_simulate_command(CLI::App& app, int& exit_code) {
       ->type_name("TIME");
   command->add_option("--restart", args->restart, "continue the run saved in this checkpoint")
       ->type_name("FILE");
-  add_case_options(*command, args->options);
+  add_case_options(*command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
   command->callback([args, &exit_code] { exit_code = run_simulate(*args); });
 }
 

@@ -2,7 +2,9 @@
 
 #include <cairo-pdf.h>
 
+#include <fstream>
 #include <stdexcept>
+#include <string>
 
 #include "reports/document/page_layout.hpp"
 
@@ -43,7 +45,7 @@ int lay_out(cairo_t* cr, const ReportContent& content, int total_pages) {
 
 }  // namespace
 
-int write_report_pdf(const ReportContent& content, const std::filesystem::path& path) {
+RenderedPdf render_report_pdf(const ReportContent& content) {
   // Pass 1 counts the pages on a scratch surface; pass 2 draws with "page i of N".
   cairo_surface_t* scratch = cairo_pdf_surface_create_for_stream(
       [](void*, const unsigned char*, unsigned int) { return CAIRO_STATUS_SUCCESS; }, nullptr,
@@ -53,11 +55,14 @@ int write_report_pdf(const ReportContent& content, const std::filesystem::path& 
   cairo_destroy(counting);
   cairo_surface_destroy(scratch);
 
-  std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  const auto temporary = std::filesystem::path(path.string() + ".tmp");
-  cairo_surface_t* surface =
-      cairo_pdf_surface_create(temporary.c_str(), PageLayout::kPageWidth, PageLayout::kPageHeight);
+  RenderedPdf pdf;
+  pdf.pages = pages;
+  cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(
+      [](void* closure, const unsigned char* data, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &pdf.bytes, PageLayout::kPageWidth, PageLayout::kPageHeight);
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, content.title.c_str());
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "feedflow");
   cairo_t* cr = cairo_create(surface);
@@ -66,13 +71,31 @@ int write_report_pdf(const ReportContent& content, const std::filesystem::path& 
   cairo_surface_finish(surface);
   const auto status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    std::filesystem::remove(temporary, ec);
-    throw std::runtime_error("cannot write " + path.string() + ": " + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(std::string("cannot render the PDF report: ") + cairo_status_to_string(status));
+  return pdf;
+}
+
+int write_report_pdf(const ReportContent& content, const std::filesystem::path& path) {
+  const RenderedPdf pdf = render_report_pdf(content);
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  const auto temporary = std::filesystem::path(path.string() + ".tmp");
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(pdf.bytes.data(), static_cast<std::streamsize>(pdf.bytes.size()));
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(temporary, ec);
+      throw std::runtime_error("cannot write " + path.string());
+    }
   }
   std::filesystem::rename(temporary, path, ec);
-  if (ec) throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
-  return pages;
+  if (ec) {
+    std::filesystem::remove(temporary, ec);
+    throw std::runtime_error("cannot write " + path.string() + ": " + ec.message());
+  }
+  return pdf.pages;
 }
 
 }  // namespace feedflow
