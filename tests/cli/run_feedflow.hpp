@@ -39,18 +39,20 @@ inline std::filesystem::path scratch_folder(const std::string& prefix, bool with
   return dir;
 }
 
-// `args` is appended to the command line as is (the caller quotes).
-inline Run run_feedflow(const std::string& args, const std::filesystem::path& folder) {
-  const auto out = folder / ".stdout";
+// `args` is appended to the command line as is (the caller quotes). stdout goes to a file that
+// is read back, or to `stdout_to` when given (e.g. /dev/full; r.out is then empty).
+inline Run run_feedflow(const std::string& args, const std::filesystem::path& folder,
+                        const std::string& stdout_to = "") {
+  const auto out = stdout_to.empty() ? folder / ".stdout" : std::filesystem::path(stdout_to);
   const auto err = folder / ".stderr";
   const std::string command = "cd '" + folder.string() + "' && '" FEEDFLOW_EXECUTABLE "' " + args +
                               " > '" + out.string() + "' 2> '" + err.string() + "' < /dev/null";
   const int status = std::system(command.c_str());
   Run r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
+  r.out = stdout_to.empty() ? slurp(out) : "";
   r.err = slurp(err);
-  std::filesystem::remove(out);
+  if (stdout_to.empty()) std::filesystem::remove(out);
   std::filesystem::remove(err);
   return r;
 }

@@ -85,5 +85,27 @@ TEST(AtomicFile, WritesWholeOrNothing) {
   fs::remove_all(dir);
 }
 
+// A staged file that is never committed leaves nothing (so a set of files is all or none); a
+// link's target is replaced in its own folder and the link stays; a folder is refused.
+TEST(AtomicFile, StagedFilesCommitOrVanish) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "feedflow_pending_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "real");
+  { PendingFile abandoned(dir / "r.json", "never"); }
+  EXPECT_TRUE(fs::is_empty(dir / "real"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
+  std::ofstream(dir / "real" / "t.json") << "old";
+  fs::create_symlink("real/t.json", dir / "link.json");
+  PendingFile through_link(dir / "link.json", "new");
+  EXPECT_EQ(through_link.target(), fs::canonical(dir / "real" / "t.json"));
+  through_link.commit();
+  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
+  std::ifstream in(dir / "real" / "t.json");
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "new");
+  EXPECT_THROW(PendingFile(dir / "real", "x"), std::runtime_error);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace feedflow
