@@ -2,11 +2,12 @@
 
 #include <charconv>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
+#include "designer/case/case_consistency.hpp"
 #include "designer/case/material_reader.hpp"
 #include "designer/case/table_reader.hpp"
+#include "designer/case/toml_text.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,17 +22,9 @@ constexpr const char* kDefaultMaterial = "loblolly_pine";
 
 toml::table parse_case_file(const std::string& path) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
+  if (!fs::exists(fs::symlink_status(path, ec)))
     throw InputError(path, "", "no such case file (see `feedflow cases` for the shipped ones)");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  try {
-    return toml::parse(text.str(), path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "",
-                     "not valid TOML: " + std::string(e.description()));
-  }
+  return parse_toml_text(read_input_file(path, "case file"), path);
 }
 
 // "0.5" -> number, "true" -> boolean, anything else ("32deg", "wedge") -> string.
@@ -58,6 +51,9 @@ void apply_override(toml::table& root, const SetOverride& o) {
     if (part.empty()) throw InputError("--set", o.key, "empty part in the key; write e.g. hopper.semi_angle=32deg");
     parts.push_back(part);
   }
+  if (parts.size() > kMaxKeyDepth)
+    throw InputError("--set", o.key.substr(0, 60), "a key nested " + std::to_string(parts.size()) +
+                                                       " levels deep; feedflow's keys nest at most four");
   toml::table* table = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     toml::node* next = table->get(parts[i]);
@@ -131,7 +127,9 @@ SetOverride parse_set_override(const std::string& text) {
 }
 
 Case load_case(const std::string& path, std::span<const SetOverride> overrides) {
-  return load_case(path, overrides, MaterialLibrary::standard(fs::path(path).parent_path()));
+  // The case's own materials/ folder, also for a case named without a folder ("wedge.toml").
+  const fs::path folder = fs::path(path).parent_path();
+  return load_case(path, overrides, MaterialLibrary::standard(folder.empty() ? fs::path(".") : folder));
 }
 
 Case load_case(const std::string& path, std::span<const SetOverride> overrides,
@@ -171,12 +169,18 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
   const auto& equipment_table = *root.get(present[0])->as_table();
   if (present[0] == "hopper") {
     auto h = read_equipment(equipment_table, "hopper", hopper_fields(), path, c.warnings);
-    if (!h.wall_friction_angle) h.wall_friction_angle = c.material.bulk.wall_friction_angle;
+    const bool wall_from_material = !h.wall_friction_angle;
+    if (wall_from_material) h.wall_friction_angle = c.material.bulk.wall_friction_angle;
+    raise_problems(check_against_material(h, c.material, wall_from_material), equipment_table,
+                   TableContext{"hopper", path}, &c.warnings);
     c.equipment = h;
   } else if (present[0] == "chute") {
     c.equipment = read_equipment(equipment_table, "chute", chute_fields(), path, c.warnings);
   } else {
-    c.equipment = read_equipment(equipment_table, "drum", drum_fields(), path, c.warnings);
+    const auto d = read_equipment(equipment_table, "drum", drum_fields(), path, c.warnings);
+    raise_problems(check_against_material(d, c.material), equipment_table, TableContext{"drum", path},
+                   &c.warnings);
+    c.equipment = d;
   }
 
   if (const toml::table* design = table_at(root, "design", path)) {

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "designer/case/material_reader.hpp"
+#include "designer/case/toml_text.hpp"
 #include "models/core/errors.hpp"
 #include "models/material/builtin_materials.hpp"
 
@@ -15,11 +15,7 @@ namespace feedflow {
 namespace {
 
 std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_input_file(path.string(), "material file");
 }
 
 std::string description_of(const toml::table& table) {
@@ -95,9 +91,16 @@ Material MaterialLibrary::load(const std::string& name) const {
   for (const auto& folder : folders_) {
     const fs::path file = folder / (name + ".toml");
     std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) continue;
+    if (!fs::exists(fs::symlink_status(file, ec))) continue;
+    // An entry that is there but is no readable file (a folder, a broken link) is an error, not
+    // a reason to fall back silently on a material of the same name elsewhere.
     const auto table = parse_material_text(read_file(file), file.string());
     Material m = read_material(table, file.string(), "material file " + file.string());
+    if (m.name != name)
+      throw InputError(file.string(), "name",
+                       "the file " + file.filename().string() + " declares the material \"" + m.name +
+                           "\"; a material file is named after its material (" + m.name + ".toml), or give it "
+                           "name = \"" + name + "\"");
     m.origin = file.string();
     return m;
   }
@@ -108,9 +111,13 @@ Material MaterialLibrary::load(const std::string& name) const {
     m.origin = "built-in";
     return m;
   }
-  std::string known;
+  std::string known, searched;
   for (const auto& e : list()) known += (known.empty() ? "" : ", ") + e.name;
-  throw InputError("", "", "no material named \"" + name + "\" (known: " + known + ")");
+  for (const auto& folder : folders_) searched += (searched.empty() ? "" : ", ") + folder.string() + "/";
+  throw InputError("", "", "no material named \"" + name + "\" in " +
+                               (searched.empty() ? std::string() : searched + " or ") +
+                               "the built-in materials (known: " + known +
+                               "; more folders: FEEDFLOW_MATERIALS=dir1:dir2)");
 }
 
 }  // namespace feedflow

@@ -1,6 +1,7 @@
 #include "designer/case/material_reader.hpp"
 
 #include "designer/case/table_reader.hpp"
+#include "designer/case/toml_text.hpp"
 
 namespace feedflow {
 namespace {
@@ -137,12 +138,7 @@ void override_material(Material& material, const toml::table& table, const std::
 }
 
 toml::table parse_material_text(std::string_view text, const std::string& path) {
-  try {
-    return toml::parse(text, path);
-  } catch (const toml::parse_error& e) {
-    throw InputError(path + ":" + std::to_string(e.source().begin.line), "",
-                     "not valid TOML: " + std::string(e.description()));
-  }
+  return parse_toml_text(text, path);
 }
 
 }  // namespace feedflow

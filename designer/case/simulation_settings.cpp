@@ -11,23 +11,25 @@ constexpr std::string_view kRemapOrders[] = {"first",           "second",
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
 constexpr std::string_view kHopperSections[] = {"half", "full"};
+// Simulated times and intervals: up to an hour (a DEM second takes minutes to hours).
+constexpr Range kTimeRange{0.0, 3600.0, false, true};
 }  // namespace
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
   using S = DemCaseSettings;
   static const FieldSpec<S> fields[] = {
       optional_number_field<S>("slab_depth", &S::slab_depth, dim::length, "mm",
-                               Range::positive(),
+                               Range{0.0, 1.0, false, true},
                                "depth of the periodic slab (hopper 3 mm, chute 15 mm; drum: full length)"),
-      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", Range::positive(),
+      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", kTimeRange,
                                "simulated time after filling (default: until converged or stopped)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
-                               Range::positive(), "time between particle snapshots"),
-      optional_number_field<S>("time_step", &S::time_step, dim::time, "us", Range::positive(),
+                               kTimeRange, "time between particle snapshots"),
+      optional_number_field<S>("time_step", &S::time_step, dim::time, "us", Range{0.0, 1.0, false, true},
                                "time step instead of the stable one (smaller: warned)"),
-      optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
-                               Range::closed(0.0, 4294967295.0),
-                               "seed of the rain-fall insertion"),
+      whole_number(optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
+                                            Range::closed(0.0, 4294967295.0),
+                                            "seed of the rain-fall insertion (a whole number)")),
       label_field<S>("normal_law", &S::normal_law, kNormalLaws,
                      "normal contact law (default the seed's hysteretic_nonlinear2; hertz allows "
                      "a ~20x larger time step for reduced test twins)",
@@ -39,12 +41,12 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
 std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
   using S = CelCaseSettings;
   static const FieldSpec<S> fields[] = {
-      optional_number_field<S>("cell_size", &S::cell_size, dim::length, "mm", Range::positive(),
+      optional_number_field<S>("cell_size", &S::cell_size, dim::length, "mm", Range::closed(1e-3, 1.0),
                                "edge of the square Eulerian cells"),
-      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", Range::positive(),
+      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", kTimeRange,
                                "simulated time after the gravity phase"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
-                               Range::positive(), "time between field snapshots"),
+                               kTimeRange, "time between field snapshots"),
       label_field<S>("remap_order", &S::remap_order, kRemapOrders,
                      "advection in the remap: first (donor cell, default), second (van Leer "
                      "MUSCL on stress, void ratio, density and nodal momentum), or second "

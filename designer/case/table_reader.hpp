@@ -2,6 +2,7 @@
 // Reads one TOML table into a record described by a FieldSpec table (models/core/field_spec.hpp):
 // units, dimensions, ranges, label choices, unknown keys with suggestions. Every error is an
 // InputError naming the file and line (or "--set") and the dotted key.
+#include <cmath>
 #include <map>
 #include <span>
 #include <string>
@@ -104,6 +105,9 @@ void read_fields(const toml::table& table, std::span<const FieldSpec<Record>> fi
       throw InputError(location(value, ctx.file), key,
                        "out of range: " + f.range.describe(f.display_unit) + ", got " +
                            format_for_error(si, f.display_unit));
+    if (f.whole && si != std::floor(si))
+      throw InputError(location(value, ctx.file), key,
+                       "expected a whole number, got " + format_for_error(si, f.display_unit));
     if (f.number)
       record.*(f.number) = si;
     else

@@ -1,5 +1,6 @@
 #pragma once
 // The three kinds of failure a user can meet, each with its own exit code (see designer/).
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -22,7 +23,23 @@ class InputError : public std::runtime_error {
     std::string s;
     if (!where.empty()) s += where + ": ";
     if (!key.empty()) s += key + ": ";
-    return s + message;
+    return shorten(s + message);
+  }
+  // A value echoed back may be huge (a 100 kB string in a case file): a word over 200 characters
+  // keeps its first 60 and its length, and the whole message stays under 2 000 characters.
+  static std::string shorten(const std::string& text) {
+    std::string s;
+    std::size_t i = 0;
+    while (i < text.size()) {
+      const std::size_t end = std::min(text.find_first_of(" \n", i), text.size());
+      if (end - i > 200)
+        s += text.substr(i, 60) + "...(" + std::to_string(end - i) + " characters)";
+      else
+        s += text.substr(i, end - i);
+      if (end < text.size()) s += text[end];
+      i = end + 1;
+    }
+    return s.size() > 2000 ? s.substr(0, 1900) + "... (message cut)" : s;
   }
   std::string where_;
   std::string key_;

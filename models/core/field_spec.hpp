@@ -50,6 +50,7 @@ struct FieldSpec {
   Range range{};
   double Record::*number = nullptr;
   std::optional<double> Record::*optional_number = nullptr;
+  bool whole = false;  // a count or a seed: no fraction
 
   // List fields: several numbers of one dimension (a measured table).
   std::vector<double> Record::*number_list = nullptr;
@@ -122,6 +123,13 @@ constexpr FieldSpec<Record> label_field(std::string_view key, std::string Record
   f.presence = presence;
   f.choices = choices;
   f.label = member;
+  return f;
+}
+
+// The same field, taking whole numbers only (a seed, a count).
+template <class Record>
+constexpr FieldSpec<Record> whole_number(FieldSpec<Record> f) {
+  f.whole = true;
   return f;
 }
 

@@ -29,7 +29,7 @@ std::span<const FieldSpec<DesignTargets>> design_target_fields() {
   using T = DesignTargets;
   static const FieldSpec<T> fields[] = {
       optional_number_field<T>("required_throughput", &T::required_throughput,
-                               dim::mass_flow_rate, "kg/s", Range::positive(),
+                               dim::mass_flow_rate, "kg/s", Range{0.0, 1e5, false, true},
                                "hopper: discharge rate the outlet must deliver"),
       number_field<T>("outlet_safety_factor", &T::outlet_safety_factor, dim::dimensionless, "-",
                       Range::closed(1.0, 10.0),
@@ -41,7 +41,7 @@ std::span<const FieldSpec<DesignTargets>> design_target_fields() {
                       Range::closed(0.0, 15.0 * kDeg),
                       "hopper: margin kept below the mass-flow limit angle", Presence::optional),
       optional_number_field<T>("max_stopping_thickness", &T::max_stopping_thickness,
-                               dim::length, "mm", Range::positive(),
+                               dim::length, "mm", Range{0.0, 10.0, false, true},
                                "chute: largest deposit allowed to remain on the ramp"),
       label_field<T>("required_regime", &T::required_regime, kRegimes,
                      "drum: flow regime the drum must run in", Presence::optional),

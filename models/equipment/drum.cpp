@@ -11,13 +11,14 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::span<const FieldSpec<Drum>> drum_fields() {
   static const FieldSpec<Drum> fields[] = {
-      number_field<Drum>("diameter", &Drum::diameter, dim::length, "mm", Range::positive(),
+      number_field<Drum>("diameter", &Drum::diameter, dim::length, "mm", Range::closed(0.01, 10.0),
                          "internal drum diameter"),
-      number_field<Drum>("length", &Drum::length, dim::length, "mm", Range::positive(),
+      number_field<Drum>("length", &Drum::length, dim::length, "mm", Range::closed(0.01, 100.0),
                          "internal drum length between the end walls"),
       number_field<Drum>("fill_fraction", &Drum::fill_fraction, dim::dimensionless, "%",
                          Range::open(0.0, 1.0), "filled fraction of the drum cross-section"),
-      number_field<Drum>("speed", &Drum::speed, dim::angular_speed, "rpm", Range::positive(),
+      number_field<Drum>("speed", &Drum::speed, dim::angular_speed, "rpm",
+                         Range{0.0, 1000.0 * 2.0 * std::numbers::pi / 60.0, false, true},
                          "rotation speed"),
       optional_number_field<Drum>("wall_friction_angle", &Drum::wall_friction_angle, dim::angle,
                                   "deg", Range::half_open(0.0, 90.0 * kDeg),

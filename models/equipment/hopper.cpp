@@ -10,6 +10,9 @@ namespace feedflow {
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kShapes[] = {"wedge", "conical"};
+// Walls flatter than this from the vertical make a flat-bottomed bin: the radial stress field
+// and Johanson's discharge model are for converging hoppers.
+constexpr double kMaxSemiAngle = 80.0 * kDeg;
 }  // namespace
 
 double Hopper::outlet_height() const { return 0.5 * outlet_width / std::tan(semi_angle); }
@@ -35,17 +38,18 @@ std::span<const FieldSpec<Hopper>> hopper_fields() {
       label_field<Hopper>("shape", &Hopper::shape, kShapes,
                           "wedge (plane flow, slot outlet) or conical (circular outlet)"),
       number_field<Hopper>("semi_angle", &Hopper::semi_angle, dim::angle, "deg",
-                           Range::open(0.0, 90.0 * kDeg),
-                           "hopper wall angle measured from the vertical"),
+                           Range{0.0, kMaxSemiAngle, false, true},
+                           "hopper wall angle measured from the vertical (a flatter wall makes a "
+                           "flat-bottomed bin, outside the converging-hopper models)"),
       number_field<Hopper>("outlet_width", &Hopper::outlet_width, dim::length, "mm",
-                           Range::positive(), "slot width (wedge) or outlet diameter (conical)"),
+                           Range{0.0, 10.0, false, true}, "slot width (wedge) or outlet diameter (conical)"),
       number_field<Hopper>("fill_height", &Hopper::fill_height, dim::length, "m",
-                           Range::positive(),
+                           Range{0.0, 100.0, false, true},
                            "height of the material top above the virtual apex of the hopper"),
-      number_field<Hopper>("bin_width", &Hopper::bin_width, dim::length, "m", Range::positive(),
+      number_field<Hopper>("bin_width", &Hopper::bin_width, dim::length, "m", Range{0.0, 50.0, false, true},
                            "width (wedge) or diameter (conical) of the vertical bin section"),
       optional_number_field<Hopper>("slot_length", &Hopper::slot_length, dim::length, "m",
-                                    Range::positive(),
+                                    Range{0.0, 50.0, false, true},
                                     "out-of-plane length of a wedge hopper's slot outlet"),
       optional_number_field<Hopper>("wall_friction_angle", &Hopper::wall_friction_angle,
                                     dim::angle, "deg", Range::half_open(0.0, 90.0 * kDeg),
@@ -70,6 +74,10 @@ std::vector<FieldProblem> check(const Hopper& h) {
     if (!h.slot_length)
       problems.push_back({"slot_length", "is required for a wedge hopper (out-of-plane length "
                                          "of the slot outlet, e.g. \"0.5 m\")"});
+    else if (*h.slot_length < h.outlet_width)
+      problems.push_back({"slot_length", "must be at least the outlet width (" + format_quantity(h.outlet_width, "mm") +
+                                             ") for a slot outlet, got " + format_quantity(*h.slot_length, "mm") +
+                                             " (a slot shorter than it is wide is no plane-flow wedge)"});
     else if (*h.slot_length < 3.0 * h.outlet_width)
       problems.push_back({"slot_length",
                           "is shorter than 3 outlet widths (" +

@@ -26,16 +26,20 @@ JohansonDischarge johanson_discharge(FlowGeometry g, double semi_angle, double o
                                      double flow_factor, const FlowFunction& ff_curve,
                                      const BulkDensity& density, double gravity = kGravity);
 
+// Beverloo's empty annulus: the outlet acts k d narrower (k = 1.5); an outlet no wider than
+// k d passes nothing.
+inline constexpr double kBeverlooK = 1.5;
+
 // Beverloo, circular outlet: W = C rho_b sqrt(g) (D - k d)^(5/2) [kg/s].
 double beverloo_circular_rate(double bulk_density, double outlet_diameter, double particle_size,
-                              double k = 1.5, double c = 0.58, double gravity = kGravity);
+                              double k = kBeverlooK, double c = 0.58, double gravity = kGravity);
 // Beverloo, slot: W' = C2 rho_b sqrt(g) (B - k d)^(3/2) per metre [kg/(s m)] ...
 double beverloo_slot_rate_per_metre(double bulk_density, double outlet_width,
-                                    double particle_size, double k = 1.5, double c2 = 1.03,
+                                    double particle_size, double k = kBeverlooK, double c2 = 1.03,
                                     double gravity = kGravity);
 // ... and for a slot of length L: W = C2 rho_b sqrt(g) (L - k d)(B - k d)^(3/2) [kg/s].
 double beverloo_slot_rate(double bulk_density, double outlet_width, double slot_length,
-                          double particle_size, double k = 1.5, double c2 = 1.03,
+                          double particle_size, double k = kBeverlooK, double c2 = 1.03,
                           double gravity = kGravity);
 
 // Hourglass theory (Savage; Davidson & Nedderman), an upper bound: stress ratio

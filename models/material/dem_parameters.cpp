@@ -5,9 +5,9 @@ namespace feedflow {
 std::span<const FieldSpec<DemParticle>> dem_particle_fields() {
   using P = DemParticle;
   static const FieldSpec<P> fields[] = {
-      number_field<P>("radius", &P::radius, dim::length, "mm", Range::positive(),
+      number_field<P>("radius", &P::radius, dim::length, "mm", Range::closed(1e-5, 0.05),
                       "radius of the coarse-grained sphere"),
-      number_field<P>("density", &P::density, dim::density, "kg/m^3", Range::positive(),
+      number_field<P>("density", &P::density, dim::density, "kg/m^3", Range::closed(1.0, 20000.0),
                       "particle density (set so the packing matches the bulk density)"),
   };
   return fields;
@@ -31,7 +31,7 @@ std::span<const FieldSpec<DemContactParameters>> dem_contact_fields() {
       number_field<C>("C", &C::c, dim::area, "m^2", Range::positive(),
                       "unloading force scaling coefficient"),
       number_field<C>("youngs_modulus", &C::youngs_modulus, dim::pressure, "MPa",
-                      Range::positive(), "Young's modulus"),
+                      Range{0.0, 1e12, false, true}, "Young's modulus"),
       number_field<C>("poisson_ratio", &C::poisson_ratio, dim::dimensionless, "-",
                       Range{-1.0, 0.5, false, false}, "Poisson's ratio"),
       number_field<C>("restitution", &C::restitution, dim::dimensionless, "-",

@@ -9,6 +9,10 @@ namespace feedflow {
 namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kFlowFunctions[] = {"linear", "power_law", "tabulated"};
+// Strengths of bulk solids at low stress: up to 1 MPa (a cemented cake) [Pa].
+constexpr Range kStrengthRange{0.0, 1e6, true, true};
+// Consolidation stresses: up to 1 GPa [Pa].
+constexpr Range kStressRange{0.0, 1e9, true, true};
 }  // namespace
 
 std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
@@ -19,16 +23,16 @@ std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
                      "form of the flow function sigma_c(sigma1)", opt),
       number_field<F>("ff_slope", &F::ff_slope, dim::dimensionless, "-", Range::half_open(0.0, 1.0),
                       "linear flow function: slope a of sigma_c = a sigma1 + b", opt),
-      number_field<F>("ff_intercept", &F::ff_intercept, dim::pressure, "Pa", Range::non_negative(),
+      number_field<F>("ff_intercept", &F::ff_intercept, dim::pressure, "Pa", kStrengthRange,
                       "linear flow function: intercept b (strength at zero consolidation)", opt),
       number_field<F>("ff_coefficient", &F::ff_coefficient, dim::dimensionless, "-",
-                      Range::non_negative(),
+                      kStrengthRange,
                       "power-law flow function: a of sigma_c = a sigma1^b, stresses in Pa", opt),
       number_field<F>("ff_exponent", &F::ff_exponent, dim::dimensionless, "-", Range::closed(0.0, 2.0),
                       "power-law flow function: exponent b", opt),
       number_list_field<F>("ff_major_stress", &F::ff_major_stress, dim::pressure, "Pa",
-                           Range::non_negative(), "tabulated flow function: major consolidation stresses"),
-      number_list_field<F>("ff_strength", &F::ff_strength, dim::pressure, "Pa", Range::non_negative(),
+                           kStressRange, "tabulated flow function: major consolidation stresses"),
+      number_list_field<F>("ff_strength", &F::ff_strength, dim::pressure, "Pa", kStrengthRange,
                            "tabulated flow function: unconfined yield strengths"),
       number_field<F>("ff_uncertainty", &F::ff_uncertainty, dim::dimensionless, "%",
                       Range::half_open(0.0, 1.0), "relative uncertainty of the flow function", opt),
@@ -41,8 +45,8 @@ std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
                       "deg", Range::closed(0.0, 15.0 * kDeg), "uncertainty of the wall friction angle",
                       opt),
       number_list_field<F>("density_major_stress", &F::density_major_stress, dim::pressure, "Pa",
-                           Range::non_negative(), "measured compressibility: major consolidation stresses"),
-      number_list_field<F>("density", &F::density, dim::density, "kg/m^3", Range::positive(),
+                           kStressRange, "measured compressibility: major consolidation stresses"),
+      number_list_field<F>("density", &F::density, dim::density, "kg/m^3", Range::closed(1.0, 20000.0),
                            "measured compressibility: bulk density at those stresses"),
   };
   return fields;
@@ -76,7 +80,7 @@ std::span<const FieldSpec<SurfaceFlowProperties>> surface_flow_fields() {
                       "angle below which every layer stays at rest (mu_s = tan theta1)"),
       number_field<S>("theta2", &S::theta2, dim::angle, "deg", Range::open(0.0, 90.0 * kDeg),
                       "angle above which no layer stops (mu_2 = tan theta2)"),
-      number_field<S>("stop_length", &S::stop_length, dim::length, "mm", Range::positive(),
+      number_field<S>("stop_length", &S::stop_length, dim::length, "mm", Range{0.0, 1.0, false, true},
                       "length L of Pouliquen's h_stop law"),
       number_field<S>("flow_rule_beta", &S::flow_rule_beta, dim::dimensionless, "-",
                       Range::positive(), "beta of the flow rule Fr = beta h/h_stop - Gamma", opt),
@@ -84,7 +88,7 @@ std::span<const FieldSpec<SurfaceFlowProperties>> surface_flow_fields() {
                       Range::non_negative(), "Gamma of the flow rule", opt),
       number_field<S>("solid_fraction", &S::solid_fraction, dim::dimensionless, "-",
                       Range::open(0.0, 1.0), "solid volume fraction of a flowing layer", opt),
-      number_field<S>("cohesion", &S::cohesion, dim::pressure, "Pa", Range::non_negative(),
+      number_field<S>("cohesion", &S::cohesion, dim::pressure, "Pa", kStrengthRange,
                       "low-stress cohesion for the infinite-slope check", opt),
       number_field<S>("theta_uncertainty", &S::theta_uncertainty, dim::angle, "deg",
                       Range::closed(0.0, 10.0 * kDeg), "uncertainty of theta1 and theta2", opt),

@@ -5,6 +5,10 @@
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
+namespace {
+// Void ratios at zero pressure: sands 0.5-1.2, fluffy biomass a few.
+constexpr Range kVoidRatioRange{0.0, 10.0, false, true};
+}  // namespace
 
 std::span<const FieldSpec<HypoplasticParameters>> hypoplastic_fields() {
   using P = HypoplasticParameters;
@@ -12,15 +16,15 @@ std::span<const FieldSpec<HypoplasticParameters>> hypoplastic_fields() {
   static const FieldSpec<P> fields[] = {
       number_field<P>("phi_c", &P::phi_c, dim::angle, "deg", Range::open(0.0, 90.0 * deg),
                       "critical-state friction angle"),
-      number_field<P>("h_s", &P::h_s, dim::pressure, "kPa", Range::positive(),
+      number_field<P>("h_s", &P::h_s, dim::pressure, "kPa", Range{0.0, 1e12, false, true},
                       "granulate hardness (pressure scale of the compression law)"),
       number_field<P>("n", &P::n, dim::dimensionless, "-", Range{0.0, 1.0, false, true},
                       "exponent of the compression law"),
-      number_field<P>("e_d0", &P::e_d0, dim::dimensionless, "-", Range::positive(),
+      number_field<P>("e_d0", &P::e_d0, dim::dimensionless, "-", kVoidRatioRange,
                       "minimum void ratio at zero pressure"),
-      number_field<P>("e_c0", &P::e_c0, dim::dimensionless, "-", Range::positive(),
+      number_field<P>("e_c0", &P::e_c0, dim::dimensionless, "-", kVoidRatioRange,
                       "critical void ratio at zero pressure"),
-      number_field<P>("e_i0", &P::e_i0, dim::dimensionless, "-", Range::positive(),
+      number_field<P>("e_i0", &P::e_i0, dim::dimensionless, "-", kVoidRatioRange,
                       "maximum void ratio at zero pressure"),
       number_field<P>("alpha", &P::alpha, dim::dimensionless, "-", Range::non_negative(),
                       "exponent of the density factor (peak friction, dilatancy)"),

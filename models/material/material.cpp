@@ -5,15 +5,21 @@
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
+namespace {
+// Bulk and particle densities from aerated powders to metal ores [kg/m^3].
+constexpr Range kDensityRange{1.0, 20000.0, true, true};
+// Grain sizes from fine powders to lump [m].
+constexpr Range kSizeRange{1e-6, 0.5, true, true};
+}  // namespace
 
 std::span<const FieldSpec<BulkProperties>> bulk_fields() {
   using B = BulkProperties;
   constexpr double deg = std::numbers::pi / 180.0;
   static const FieldSpec<B> fields[] = {
-      number_field<B>("density", &B::density, dim::density, "kg/m^3", Range::positive(),
+      number_field<B>("density", &B::density, dim::density, "kg/m^3", kDensityRange,
                       "design bulk density"),
       optional_number_field<B>("loose_density", &B::loose_density, dim::density, "kg/m^3",
-                               Range::positive(), "loose (poured) bulk density"),
+                               kDensityRange, "loose (poured) bulk density, at most the design density"),
       number_field<B>("wall_friction_angle", &B::wall_friction_angle, dim::angle, "deg",
                       Range::half_open(0.0, 90.0 * deg),
                       "wall friction angle on the reference wall"),
@@ -26,14 +32,20 @@ std::span<const FieldSpec<BulkProperties>> bulk_fields() {
 std::span<const FieldSpec<ParticleSizeDistribution>> psd_fields() {
   using P = ParticleSizeDistribution;
   static const FieldSpec<P> fields[] = {
-      number_field<P>("d10", &P::d10, dim::length, "mm", Range::positive(),
+      number_field<P>("d10", &P::d10, dim::length, "mm", kSizeRange,
                       "particle size at 10 % cumulative passing"),
-      number_field<P>("d50", &P::d50, dim::length, "mm", Range::positive(),
+      number_field<P>("d50", &P::d50, dim::length, "mm", kSizeRange,
                       "median particle size (50 % passing)"),
-      number_field<P>("d90", &P::d90, dim::length, "mm", Range::positive(),
+      number_field<P>("d90", &P::d90, dim::length, "mm", kSizeRange,
                       "particle size at 90 % cumulative passing"),
   };
   return fields;
+}
+
+std::vector<FieldProblem> check(const BulkProperties& b) {
+  if (!b.loose_density || *b.loose_density <= b.density) return {};
+  return {{"loose_density", "must not exceed the design density (" + format_quantity(b.density, "kg/m^3") +
+                                "), got " + format_quantity(*b.loose_density, "kg/m^3")}};
 }
 
 std::vector<FieldProblem> check(const ParticleSizeDistribution& p) {

@@ -43,6 +43,7 @@ struct Material {
 };
 
 std::span<const FieldSpec<BulkProperties>> bulk_fields();
+std::vector<FieldProblem> check(const BulkProperties& bulk);
 std::span<const FieldSpec<ParticleSizeDistribution>> psd_fields();
 std::vector<FieldProblem> check(const ParticleSizeDistribution& psd);
 
