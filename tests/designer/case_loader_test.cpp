@@ -2,6 +2,7 @@
 // file, line and key named.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -131,7 +132,7 @@ TEST_F(TempCase, WrongUnitNamesDimension) {
 TEST_F(TempCase, OutOfRangeValuesAreRefused) {
   struct Bad { const char* from; const char* to; const char* key; const char* expect; };
   const Bad bad[] = {
-      {"\"30 deg\"", "\"90 deg\"", "hopper.semi_angle", "< 90 deg"},
+      {"\"30 deg\"", "\"90 deg\"", "hopper.semi_angle", "<= 80 deg"},
       {"\"60 mm\"", "\"-60 mm\"", "hopper.outlet_width", "> 0 mm"},
       {"\"0.6 m\"", "\"0.05 m\"", "hopper.outlet_width", "smaller than bin_width"},
       {"\"wedge\"", "\"pyramid\"", "hopper.shape", "\"wedge\", \"conical\""},
@@ -243,6 +244,34 @@ TEST_F(TempCase, StandaloneMaterialInCase) {
   // Incomplete: the bulk section's required keys are named.
   const std::string m = error_of(std::string(kGoodHopper) + "[material]\nname = \"x\"\n[material.bulk]\ndensity = 1\n");
   EXPECT_NE(m.find("material.bulk.wall_friction_angle: missing"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace feedflow
+
+namespace feedflow {
+namespace {
+
+template <class Record>
+void expect_lengths_bounded(std::span<const FieldSpec<Record>> fields, const char* table) {
+  for (const auto& f : fields)
+    if (!f.is_label() && f.dimension == dim::length) {
+      EXPECT_TRUE(std::isfinite(f.range.upper) && f.range.upper < 1e3) << table << "." << f.key;
+    }
+}
+
+// Every length a case or a material gives has a finite upper bound (a 1e308 m slot or a 1e9 m
+// slab is refused at input, not met by a model or a run that never ends).
+TEST(InputRangesTable, EveryLengthHasAnUpperBound) {
+  expect_lengths_bounded(hopper_fields(), "hopper");
+  expect_lengths_bounded(chute_fields(), "chute");
+  expect_lengths_bounded(drum_fields(), "drum");
+  expect_lengths_bounded(psd_fields(), "psd");
+  expect_lengths_bounded(dem_particle_fields(), "dem.particle");
+  expect_lengths_bounded(surface_flow_fields(), "surface_flow");
+  expect_lengths_bounded(design_target_fields(), "design");
+  expect_lengths_bounded(dem_case_fields(), "dem");
+  expect_lengths_bounded(cel_case_fields(), "cel");
 }
 
 }  // namespace
