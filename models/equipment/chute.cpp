@@ -15,15 +15,16 @@ std::span<const FieldSpec<Chute>> chute_fields() {
                           Range::open(0.0, 90.0 * kDeg), "ramp inclination from the horizontal"),
       number_field<Chute>("width", &Chute::width, dim::length, "mm", Range{0.0, 10.0, false, true},
                           "ramp width"),
-      number_field<Chute>("length", &Chute::length, dim::length, "m", Range::closed(0.1, 50.0),
-                          "ramp length along the slope (the L1 release runs on 10 mm cells)"),
+      number_field<Chute>("length", &Chute::length, dim::length, "m", Range::closed(0.1, 10.0),
+                          "ramp length along the slope (the L1 release runs on 10 mm cells; its work "
+                          "grows with the ramp: 10 m takes seconds)"),
       number_field<Chute>("gate_opening", &Chute::gate_opening, dim::length, "mm",
                           Range::closed(0.01, 10.0),
                           "height of the gate opening above the ramp (the L1 release resolves it on "
                           "10 mm cells; below one cell it is not resolved and takes minutes)"),
-      number_field<Chute>("bin_length", &Chute::bin_length, dim::length, "mm", Range::closed(0.05, 10.0),
+      number_field<Chute>("bin_length", &Chute::bin_length, dim::length, "mm", Range::closed(0.05, 5.0),
                           "storage bin length in the flow direction (the L1 release's work grows with "
-                          "it: 10 m takes seconds)"),
+                          "it: 5 m takes seconds)"),
       number_field<Chute>("bin_height", &Chute::bin_height, dim::length, "mm", Range{0.0, 20.0, false, true},
                           "storage bin height"),
       number_field<Chute>("fill_height", &Chute::fill_height, dim::length, "m",

@@ -145,7 +145,7 @@ TEST(CaseFuzz, EveryMutantEndsInAResultOrANamedError) {
   std::size_t failures = 0;
   const auto start = std::chrono::steady_clock::now();
   const unsigned parallel = std::max(2u, std::thread::hardware_concurrency());
-  run_children(FEEDFLOW_EXECUTABLE, runs, parallel, std::chrono::seconds(30), [&](ChildRun& run) {
+  run_children(FEEDFLOW_EXECUTABLE, runs, parallel, std::chrono::seconds(60), [&](ChildRun& run) {
     const Mutant& m = mutants[std::stoul(run.folder.filename().string())];
     ++exits[run.timed_out ? -2 : run.signal ? -1 : run.exit_code];
     const std::string problem = judge(run, m);
