@@ -15,8 +15,7 @@
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/design/case_inputs.hpp"
-#include "designer/simulate/cel_simulation.hpp"
-#include "designer/simulate/dem_simulation.hpp"
+#include "designer/simulate/simulation.hpp"
 #include "designer/simulate/solver_choice.hpp"
 #include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/interrupt_request.hpp"
@@ -85,7 +84,7 @@ int run_simulate(const SimulateArguments& args) {
   install_interrupt_handler();
   SimulationOutcome outcome;
   try {
-    outcome = choice.solver == Solver::dem ? simulate_with_dem(request) : simulate_with_cel(request);
+    outcome = simulate(request);
   } catch (...) {
     std::error_code ignored;  // a run that failed before writing anything leaves no empty folder
     if (folder_is_new && std::filesystem::is_empty(request.out, ignored))

@@ -12,7 +12,6 @@ DemSettings dem_case_settings(const Case& c) {
   s.material = *c.material.dem;
   if (!c.dem.normal_law.empty()) s.law = choose_contact_law(c.dem.normal_law, "history", "cdt", "none");
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
-  s.quiet = true;
   return s;
 }
 

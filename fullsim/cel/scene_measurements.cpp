@@ -46,22 +46,25 @@ DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double
   return r;
 }
 
-double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x) {
+SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x) {
   const auto& g = solver.grid();
   const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);
   const int i0 = std::clamp(static_cast<int>(std::lround((centre_x - g.origin.x()) / g.cell_size)), 0, g.nx);
   double heaviest = 0.0;
   for (int i = i0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
   const double light = 0.05 * heaviest;  // nodes of nearly empty cells do not count
-  double centre = 0.0, wall = 0.0;
-  bool found = false;
+  SpeedProfile line;
   for (int i = i0; i <= g.nx; ++i) {
     const std::size_t a = g.node(i, j);
     if (solver.nodes().mass[a] <= light) continue;
-    if (!found) centre = solver.nodes().velocity[a].norm(), found = true;
-    wall = solver.nodes().velocity[a].norm();
+    line.offset.push_back((i - i0) * g.cell_size);
+    line.speed.push_back(solver.nodes().velocity[a].norm());
   }
-  return centre > 0.0 ? wall / centre : 0.0;
+  return line;
+}
+
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x) {
+  return feedflow::wall_to_centre_speed_ratio(speed_profile(solver, y, centre_x)).ratio;
 }
 
 FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "fullsim/cel/cel_solver.hpp"
+#include "fullsim/common/flow_pattern_measurement.hpp"
 
 namespace feedflow::cel {
 
@@ -20,10 +21,11 @@ struct DischargeRate {
 // grid holds less than 20 % of `initial_mass` (the hopper is running empty).
 DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass);
 
-// Speed of the material beside the inclined wall over the centreline speed, at the height
-// `y` (nodes with mass on that grid row from the node nearest `centre_x`, the centre line,
-// towards +x; the wall-side node is the last one carrying mass). Mass flow when it exceeds 0.1
-// (the wall material moves), funnel flow otherwise.
+// The node speeds along the grid row nearest the height `y`, from the node nearest `centre_x`
+// (the centre line) towards +x, of the nodes carrying material (more than 5 % of the row's
+// heaviest node): the flow-pattern line of fullsim/common/flow_pattern_measurement.hpp.
+SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x = 0.0);
+// Its wall-to-centre speed ratio (mass flow above 0.1).
 double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x = 0.0);
 
 struct FreeSurface {

@@ -52,7 +52,6 @@ DemEngine& settled_bed(int law, int tilt = 0, int copy = 0) {
                                       RollingLaw::cdt, CohesionLaw::none};
   const double a = tilt * std::numbers::pi / 180.0;
   s.gravity = 9.81 * Vec3(std::sin(a), 0.0, -std::cos(a));
-  s.quiet = true;
   const double spacing = 2.0 * kRadius;
   SimulationBox box{Vec3::Zero(), Vec3(kNx * spacing, kNy * spacing, (kNz + 4) * spacing),
                     {true, true, false}};

@@ -13,7 +13,7 @@
 //   DrumScene drum(settings, spec);
 //   drum.fill(log);
 //   drum.start_rotation(log);
-//   while (...) { drum.engine().run_until(t); watch.add(drum.sample()); }
+//   while (...) { drum.engine().advance_to(t); watch.add(drum.sample()); }
 #include <memory>
 #include <optional>
 #include <ostream>

@@ -65,13 +65,14 @@ double kept_max_speed(const ParticleStore& p, const std::optional<double>& trim_
   return std::sqrt(v2);
 }
 
-// Runs until `t` in chunks, so Ctrl-C is seen within a few hundred steps; false when it was.
-bool run_until_or_interrupted(DemEngine& engine, double t) {
+// Runs the whole steps that cover `duration`, in chunks, so Ctrl-C is seen within a few
+// hundred steps; false when it was.
+bool run_or_interrupted(DemEngine& engine, double duration) {
   constexpr long kChunk = 200;
-  const long steps = static_cast<long>(std::ceil((t - engine.time()) / engine.time_step() - 1e-9));
-  for (long done = 0; done < steps; done += kChunk) {
+  const double t = engine.time() + engine.whole_steps(duration, StepRounding::up);
+  while (!engine.reached(t)) {
     if (interrupt_requested()) return false;
-    engine.run_steps(std::min(kChunk, steps - done));
+    engine.advance_to(t, kChunk);
   }
   return true;
 }
@@ -194,7 +195,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   double next_note = 0.1 * goal;
   const auto wall_start = ProgressLine::Clock::now();
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
-    if (!run_until_or_interrupted(engine, engine.time() + s.batch_interval)) {
+    if (!run_or_interrupted(engine, s.batch_interval)) {
       report.interrupted = true;
       return report;
     }
@@ -221,7 +222,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   const double settle_start = engine.time();
   long settle_checks = 0;
   do {
-    if (!run_until_or_interrupted(engine, engine.time() + s.settle_check_interval)) {
+    if (!run_or_interrupted(engine, s.settle_check_interval)) {
       report.interrupted = true;
       return report;
     }
