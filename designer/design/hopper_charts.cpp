@@ -77,7 +77,8 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
   return c;
 }
 
-Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperEvaluation& nominal) {
+Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperModels& models,
+                          const HopperEvaluation& nominal) {
   const bool wedge = h.is_wedge();
   const double length = wedge ? *h.slot_length : 1.0;
   Chart c{"mass_flow_rate_vs_outlet_width", "Discharge rate against outlet width", {"outlet width", "mm"},
@@ -90,7 +91,7 @@ Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const Hopper
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
   const auto& rows = discharge_models().rows;
   for (const DischargeModel& row : rows) {
-    HopperModels choice;
+    HopperModels choice = models;  // the chosen flow factor, this discharge model
     choice.discharge = &row;
     ChartSeries s{std::string(row.legend), &row == &rows.front() ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
     for (double w : widths) {
@@ -168,7 +169,7 @@ Chart emptying_chart(double content, double rate, const Band& total) {
 std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a) {
   const HopperMaterial& m = a.material;
   const HopperEvaluation& nominal = a.nominal();
-  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), rate_against_outlet(h, m, nominal),
+  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), rate_against_outlet(h, m, a.models, nominal),
                             pattern_chart(h, m, a.pattern)};
   charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
   const double length = h.is_wedge() ? *h.slot_length : 1.0;

@@ -24,7 +24,7 @@ void pattern_results(const Hopper& h, const HopperAssessment& a, Estimates& resu
   results.emplace_back("flow_pattern_boundary",
                        labelled(p.near_boundary ? kNearBoundary : kClearOfBoundary, p.reason));
   results.emplace_back("flow_factor", banded(a.nominal().flow_factor, "", a.flow_factor,
-                                             std::string(a.models.flow_factor->summary), Rung::L0));
+                                             std::string(a.models.flow_factor->summary), a.models.flow_factor->rung));
 }
 
 // Cohesive arching (B_c by the chosen model and each estimate) and interlocking.
@@ -103,7 +103,7 @@ HopperAssessment assess_hopper(const Hopper& h, HopperMaterial m, const HopperMo
   // The rate band also spans the other discharge models at the nominal values.
   for (const DischargeModel& row : discharge_models().rows) {
     if (!row.spans_band) continue;
-    HopperModels alternative;
+    HopperModels alternative = models;  // the chosen flow factor and critical outlet
     alternative.discharge = &row;
     a.rate.add(evaluate_hopper(h, h.semi_angle, h.outlet_width, a.material, variants.front(), alternative).rate);
   }
