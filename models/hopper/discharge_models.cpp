@@ -1,6 +1,10 @@
 #include "models/hopper/discharge_models.hpp"
 
+#include <numbers>
+
+#include "models/hopper/flow_pattern.hpp"
 #include "models/hopper/minimum_energy_discharge.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -24,6 +28,15 @@ std::optional<DischargeRate> brown(const DischargeInputs& in) {
                        "Brown-Richards minimum energy (wedge)"};
 }
 
+// Beverloo with Rose & Tanaka's hopper factor, the stagnant zone standing at the flow-pattern
+// boundary (phi_d = 90 deg - the mass-flow limit): F = 1 in funnel flow.
+std::optional<DischargeRate> rose_tanaka(const DischargeInputs& in) {
+  const double limit = mass_flow_limit(in.geometry, in.effective_friction_angle, in.wall_friction_angle).nominal;
+  const double f = rose_tanaka_factor(in.semi_angle, 0.5 * std::numbers::pi - limit);
+  const DischargeRate flat = *beverloo(in);
+  return DischargeRate{f * flat.rate, flat.model + " x Rose-Tanaka F = " + format_number(f, 3)};
+}
+
 constexpr DischargeModel kRows[] = {
     {{"johanson", Rung::L0, "Johanson (1965) with the cohesion factor: mass flow, cohesive solids"},
      &johanson, "Johanson (cohesive)", true},
@@ -31,6 +44,10 @@ constexpr DischargeModel kRows[] = {
      &beverloo, "Beverloo", true},
     {{"brown", Rung::L0, "Brown & Richards minimum-energy theory (wedge hoppers only)"}, &brown, "Brown-Richards",
      true},
+    // Not in the band: it refines the Beverloo row for the hopper's walls, not another view.
+    {{"rose_tanaka", Rung::L0, "Beverloo x Rose & Tanaka's (1956) hopper factor (tan theta tan phi_d)^-0.35, "
+                               "phi_d = 90 deg - the mass-flow limit"},
+     &rose_tanaka, "Beverloo x Rose-Tanaka", false},
 };
 
 constexpr ModelTable<DischargeModel> kTable{"hopper.discharge", "discharge rate", kRows};

@@ -17,6 +17,8 @@ struct DischargeInputs {
   double outlet_width;                // B [m]
   const JohansonDischarge& johanson;  // its rate, and rho_b at the outlet stress
   double median_size;                 // d50 [m]; 0 when the material has no size distribution
+  double effective_friction_angle = 0.0;  // delta [rad]
+  double wall_friction_angle = 0.0;       // phi_w [rad]
 };
 
 struct DischargeRate {
@@ -33,7 +35,7 @@ struct DischargeModel : ModelEntry {
   bool spans_band;          // one of the alternatives the rate's band spans
 };
 
-// johanson (default), beverloo, brown.
+// johanson (default), beverloo, brown, rose_tanaka.
 const ModelTable<DischargeModel>& discharge_models();
 
 }  // namespace feedflow

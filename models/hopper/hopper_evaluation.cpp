@@ -16,7 +16,8 @@ HopperEvaluation evaluate_hopper(const Hopper& h, double theta, double width, co
   e.critical_model = std::move(critical.model);
 
   e.johanson = johanson_discharge(g, theta, width, e.flow_factor, ff_curve, m.density);
-  const DischargeInputs in{g, theta, width, e.johanson, m.median_size.value_or(0.0)};
+  const DischargeInputs in{g, theta, width, e.johanson, m.median_size.value_or(0.0), v.effective_friction_angle,
+                           v.wall_friction_angle};
   e.rate_row = models.discharge;
   auto discharge = e.rate_row->evaluate(in);
   if (!discharge) {

@@ -2,6 +2,7 @@
 // row evaluating what its summary says (the same numbers as the model functions it wraps).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 #include <set>
 
@@ -12,6 +13,7 @@
 #include "models/hopper/discharge_models.hpp"
 #include "models/hopper/enstad_flow_factor.hpp"
 #include "models/hopper/flow_factor_models.hpp"
+#include "models/hopper/flow_pattern.hpp"
 #include "models/hopper/minimum_energy_discharge.hpp"
 
 namespace feedflow {
@@ -86,6 +88,24 @@ TEST(ModelTables, DischargeRows) {
   const DischargeInputs cone{FlowGeometry::conical, 30 * kDeg, 0.06, johanson, 0.82e-3};
   EXPECT_FALSE(t.at("brown").evaluate(cone).has_value());
   EXPECT_DOUBLE_EQ(t.at("beverloo").evaluate(cone)->rate, beverloo_circular_rate(290, 0.06, 0.82e-3));
+}
+
+// The rose_tanaka row is Beverloo times Rose & Tanaka's factor with the stagnant zone at the
+// flow-pattern boundary: faster in mass flow, Beverloo itself past the mass-flow limit.
+TEST(ModelTables, RoseTanakaRow) {
+  const auto rho = BulkDensity::constant(290);
+  const auto johanson = johanson_discharge(FlowGeometry::conical, 20 * kDeg, 0.1, 1.5, FlowFunction::cohesionless(), rho);
+  const double delta = 50 * kDeg, phi_w = 15 * kDeg;
+  const double limit = mass_flow_limit(FlowGeometry::conical, delta, phi_w).nominal;
+  const auto& t = discharge_models();
+  const DischargeInputs steep{FlowGeometry::conical, 20 * kDeg, 0.1, johanson, 1e-3, delta, phi_w};
+  const double beverloo = t.at("beverloo").evaluate(steep)->rate;
+  EXPECT_NEAR(t.at("rose_tanaka").evaluate(steep)->rate / beverloo,
+              std::pow(std::tan(20 * kDeg) * std::tan(90 * kDeg - limit), -0.35), 1e-12);
+  EXPECT_GT(t.at("rose_tanaka").evaluate(steep)->rate, beverloo);
+  const DischargeInputs funnel{FlowGeometry::conical, limit + 5 * kDeg, 0.1, johanson, 1e-3, delta, phi_w};
+  EXPECT_DOUBLE_EQ(t.at("rose_tanaka").evaluate(funnel)->rate, t.at("beverloo").evaluate(funnel)->rate);
+  EXPECT_FALSE(t.at("rose_tanaka").spans_band);  // the released rate band is unchanged
 }
 
 }  // namespace
