@@ -58,7 +58,8 @@ void judge_pattern(const Hopper& h, const DesignTargets& t, const Estimates& es,
     v.add(finding(std::nullopt, "flow_pattern", *got + " flow" + where, margin));
   } else if (*got != required) {
     v.add(finding(VerdictStatus::fail, "flow_pattern",
-                  required + " flow required, but the hopper gives " + *got + " flow" + where, margin, 0.0));
+                  required + " flow required, but the hopper gives " + *got + " flow" + where, margin,
+                  margin ? std::optional<double>(0.0) : std::nullopt));
   } else if (*got == to_string(FlowPattern::mass) && margin && std::get<double>(margin->value) * kDeg < t.mass_flow_margin) {
     v.add(finding(VerdictStatus::marginal, "flow_pattern_margin",
                   "mass flow, but only " + shown(*margin) + " below the limit (margin " + deg(t.mass_flow_margin) +
@@ -70,7 +71,10 @@ void judge_pattern(const Hopper& h, const DesignTargets& t, const Estimates& es,
                   margin));
   } else {
     const std::string by = margin ? ", margin " + shown(*margin, std::abs(std::get<double>(margin->value))) : "";
-    v.add(finding(VerdictStatus::pass, "flow_pattern", *got + " flow as required" + where + by, margin));
+    // The margin held against the required one in mass flow, against the boundary in funnel flow.
+    const double held = *got == to_string(FlowPattern::mass) ? t.mass_flow_margin / kDeg : 0.0;
+    v.add(finding(VerdictStatus::pass, "flow_pattern", *got + " flow as required" + where + by, margin,
+                  margin ? std::optional<double>(held) : std::nullopt));
   }
 }
 
