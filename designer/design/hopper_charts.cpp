@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "models/hopper/bin_stresses.hpp"
 #include "models/hopper/hopper_slice_stresses.hpp"
@@ -18,7 +19,7 @@ std::vector<double> range(double from, double to, int points) {
   return v;
 }
 
-Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
+Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const HopperModels& models,
                            const FlowPatternVerdict& pattern) {
   Chart c{"critical_outlet_width_vs_semi_angle", "Critical outlet width against semi-angle",
           {"semi-angle", "deg"}, {"critical outlet width", "mm"}, {}, ""};
@@ -76,7 +77,8 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
   return c;
 }
 
-Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperEvaluation& nominal) {
+Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperModels& models,
+                          const HopperEvaluation& nominal) {
   const bool wedge = h.is_wedge();
   const double length = wedge ? *h.slot_length : 1.0;
   Chart c{"mass_flow_rate_vs_outlet_width", "Discharge rate against outlet width", {"outlet width", "mm"},
@@ -87,19 +89,18 @@ Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const Hopper
   const double to = std::max(2.5 * h.outlet_width, 2 * from);
   const auto widths = range(from, to, 25);
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
-  for (const char* model : {"johanson", "beverloo", "brown"}) {
-    if (!wedge && std::string(model) == "brown") continue;
-    std::vector<std::string> setting{std::string("hopper.discharge=") + model};
-    const auto choice = ModelChoices::parse(setting);
-    ChartSeries s{model == std::string("johanson") ? "Johanson (cohesive)"
-                  : model == std::string("beverloo") ? "Beverloo"
-                                                     : "Brown-Richards",
-                  model == std::string("johanson") ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
+  const auto& rows = discharge_models().rows;
+  for (const DischargeModel& row : rows) {
+    HopperModels choice = models;  // the chosen flow factor, this discharge model
+    choice.discharge = &row;
+    ChartSeries s{std::string(row.legend), &row == &rows.front() ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
     for (double w : widths) {
+      const HopperEvaluation e = evaluate_hopper(h, h.semi_angle, w, m, nominal_variant, choice);
+      if (e.rate_row != &row) break;  // the model does not apply to this hopper
       s.x.push_back(w * 1e3);
-      s.y.push_back(evaluate_hopper(h, h.semi_angle, w, m, nominal_variant, choice).rate * length);
+      s.y.push_back(e.rate * length);
     }
-    c.series.push_back(std::move(s));
+    if (!s.x.empty()) c.series.push_back(std::move(s));
   }
   c.series.push_back({"design outlet", SeriesStyle::marker, {h.outlet_width * 1e3}, {nominal.rate * length}, {}, 6});
   c.note = "Johanson goes to zero at the critical outlet width; the spread between the correlations is part of "
@@ -147,13 +148,33 @@ Chart stress_chart(const Hopper& h, const HopperMaterial& m, const double design
   return c;
 }
 
+// Emptying at the steady rate, with the band's rates: a constant rate until the hopper is empty.
+Chart emptying_chart(double content, double rate, const Band& total) {
+  Chart emptying{"discharged_mass_vs_time", "Discharged mass against time", {"time", "s"},
+                 {"discharged mass", "kg"}, {}, ""};
+  for (const auto& [label, q, style] : {std::tuple{"steady discharge", rate, SeriesStyle::line},
+                                        std::tuple{"band, low rate", total.low, SeriesStyle::dashed},
+                                        std::tuple{"band, high rate", total.high, SeriesStyle::dashed}}) {
+    const double empty_at = content / q;
+    emptying.series.push_back({label, style, {0.0, empty_at, std::max(1.2 * content / total.low, empty_at)},
+                               {0.0, content, content}, {}});
+  }
+  emptying.note = "Reduced model: a constant rate until the hopper is empty; a simulation shows the start-up and "
+                  "the end of discharge.";
+  return emptying;
+}
+
 }  // namespace
 
-std::vector<Chart> hopper_charts(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
-                                 const HopperEvaluation& nominal, const FlowPatternVerdict& pattern) {
-  std::vector<Chart> charts{outlet_against_angle(h, m, models, pattern), rate_against_outlet(h, m, nominal),
-                            pattern_chart(h, m, pattern)};
+std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a) {
+  const HopperMaterial& m = a.material;
+  const HopperEvaluation& nominal = a.nominal();
+  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), rate_against_outlet(h, m, a.models, nominal),
+                            pattern_chart(h, m, a.pattern)};
   charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
+  const double length = h.is_wedge() ? *h.slot_length : 1.0;
+  const double rate = nominal.rate * length, content = material.bulk.density * h.filled_volume();
+  if (rate > 0.0) charts.push_back(emptying_chart(content, rate, a.rate.scaled(length)));
   return charts;
 }
 

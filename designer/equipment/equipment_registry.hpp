@@ -8,18 +8,16 @@
 
 #include "designer/case/case.hpp"
 #include "designer/design/model_choices.hpp"
-#include "designer/design/verdict_builder.hpp"
 #include "designer/simulate/scene_adapter.hpp"
 
 namespace feedflow {
 
 struct EquipmentEntry {
   EquipmentKind kind;
-  // The design check (rungs L0 and L1): the reduced models' estimates, charts, assumptions and
-  // findings.
-  void (*check)(const Case&, const ModelChoices&, DesignRecord&, VerdictBuilder&);
-  // The verdict on the estimates of a full rung (the record's results) against the targets.
-  Verdict (*judge)(const Case&, const DesignRecord&);
+  // The design check (rungs L0 and L1): evaluate the reduced models, judge, explain.
+  void (*check)(const Case&, const ModelChoices&, DesignRecord&);
+  // The judge of every rung: the case's targets and any rung's estimates to a verdict.
+  Verdict (*judge)(const Case&, const Estimates&);
   // The scene that verifies the case on each full rung.
   std::unique_ptr<SceneAdapter> (*dem)(const SimulationRequest&);
   std::unique_ptr<SceneAdapter> (*cel)(const SimulationRequest&);

@@ -101,7 +101,8 @@ class CelHopperAdapter final : public CelSceneAdapter {
                                     "node speeds at mid-height of the converging section, end of run", Rung::L2, ""});
     }
     results.emplace_back("discharged_mass", Estimate{f * s.discharge().total() * slot_, "kg", std::nullopt,
-                                                     std::nullopt, label, Rung::L2, ""});
+                                                     std::nullopt, label + ", " + section_text() + ", x slot length",
+                                                     Rung::L2, ""});
     results.emplace_back("simulated_time_after_opening",
                          Estimate{s.time() - t_event, "s", std::nullopt, std::nullopt,
                                   result.end == RunEnd::stopped ? result.stop_reason : "the run's duration", Rung::L2, ""});

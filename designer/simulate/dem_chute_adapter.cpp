@@ -147,7 +147,7 @@ class DemChuteAdapter final : public SceneAdapter {
       h.y.push_back(d.height[b] * 1e3);
     }
     profile.series.push_back(h);
-    if (const Estimate* e = find_result(record, reduced_model_key("stopping_thickness")); e && e->is_number())
+    if (const Estimate* e = find_estimate(record.results, reduced_model_key("stopping_thickness")); e && e->is_number())
       profile.series.push_back({"h_stop (reduced model)", SeriesStyle::dashed, {0.0, chute_.length},
                                 {std::get<double>(e->value) * 1e3, std::get<double>(e->value) * 1e3}, {}});
     profile.note = "as the seed's DEM measured it: the highest particle along the ramp";

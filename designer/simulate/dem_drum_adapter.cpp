@@ -188,7 +188,7 @@ class DemDrumAdapter final : public SceneAdapter {
     if (steady && steady->angle != 0.0)
       chart.series.push_back({"steady mean with 2 SD band", SeriesStyle::band, {steady->from, steady->to},
                               {steady->low / kDeg, steady->low / kDeg}, {steady->high / kDeg, steady->high / kDeg}});
-    if (const Estimate* e = find_result(record, reduced_model_key("dynamic_angle_of_repose")); e && e->is_number() && !line.x.empty())
+    if (const Estimate* e = find_estimate(record.results, reduced_model_key("dynamic_angle_of_repose")); e && e->is_number() && !line.x.empty())
       chart.series.push_back({"reduced model (feedflow design)", SeriesStyle::dashed, {0.0, line.x.back()},
                               {std::get<double>(e->value), std::get<double>(e->value)}, {}});
     chart.note = "the angle is the mid-chord slope of the surface; the band is 2 SD of the snapshots in the steady window";

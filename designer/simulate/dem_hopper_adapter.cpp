@@ -149,7 +149,7 @@ class DemHopperAdapter final : public SceneAdapter {
     }
     chart.series.push_back(dem);
     const SteadyRate rate = discharge_.steady_rate(rows_of(run.series));
-    if (const Estimate* q = find_result(record, reduced_model_key("mass_flow_rate")); q && q->is_number() && !dem.x.empty()) {
+    if (const Estimate* q = find_estimate(record.results, reduced_model_key("mass_flow_rate")); q && q->is_number() && !dem.x.empty()) {
       const double qr = std::get<double>(q->value);
       const double t0 = rate.found ? rate.window_start : 0.0;
       double m0 = 0.0;

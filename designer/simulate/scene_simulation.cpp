@@ -53,6 +53,8 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
       run.previous = restore_scene_run(*stepper, f, run.columns);
       adapter.restore(f);
     });
+  if (!request.restart.empty())
+    log << "restarted from " << request.restart.string() << " at t = " << stepper->time() << " s\n";
   adapter.plan(run);
   const SceneRunResult result = run_scene(*stepper, run);
 
@@ -63,9 +65,13 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   DesignRecord& record = out.record;
   adapter.measure(result, record);
   add_reduced_model_results(request.case_data, adapter.reduced_model_quantities(), record);
-  const Verdict notes = record.verdict;
-  record.verdict = equipment_of(request.case_data.kind()).judge(request.case_data, record);
-  record.verdict.reasons.insert(record.verdict.reasons.end(), notes.reasons.begin(), notes.reasons.end());
+  // The judge of every rung, then the adapter's notes on the run.
+  const std::vector<std::string> notes = std::move(record.verdict.reasons);
+  VerdictBuilder verdict;
+  for (auto& finding : equipment_of(request.case_data.kind()).judge(request.case_data, record.results).findings)
+    verdict.add(std::move(finding));
+  for (const auto& note : notes) verdict.add(Finding{.text = note});
+  record.verdict = verdict.verdict();
   adapter.explain(result, record);
   return out;
 }

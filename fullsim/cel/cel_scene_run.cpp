@@ -98,8 +98,6 @@ void CelSceneRun::prepare(std::ostream& log) {
                 g.kinetic_energy_ratio, g.max_time, o.forces.linear_bulk_viscosity,
                 o.forces.quadratic_bulk_viscosity, scene_.event.description.c_str());
   log << text;
-  if (solver_.step_count() > 0)
-    log << "  continued at t = " << solver_.time() << " s (" << solver_.step_count() << " steps)\n";
 }
 
 long CelSceneRun::advance_to(double t, long max_steps) {

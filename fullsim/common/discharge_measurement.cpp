@@ -103,7 +103,7 @@ const char* to_string(DischargeState state) {
   switch (state) {
     case DischargeState::flowing: return "flowing";
     case DischargeState::arched: return "arched";
-    case DischargeState::emptied: return "emptied";
+    case DischargeState::emptied: return "emptied (no arch)";
   }
   return "flowing";
 }

@@ -49,6 +49,21 @@ void check(const PouliquenLaw& law) {
     throw std::invalid_argument("Pouliquen flow rule needs beta > 0 and Gamma >= 0");
 }
 
+const char* to_string(DepositOutcome o) {
+  switch (o) {
+    case DepositOutcome::Deposit: return "a layer stays behind";
+    case DepositOutcome::NoDepositAboveTheta2: return "no deposit (above theta2)";
+    case DepositOutcome::NeverFlowsBelowTheta1: return "never flows (below theta1)";
+  }
+  return "a layer stays behind";
+}
+
+std::optional<DepositOutcome> deposit_outcome_from_string(std::string_view text) {
+  for (auto o : {DepositOutcome::Deposit, DepositOutcome::NoDepositAboveTheta2, DepositOutcome::NeverFlowsBelowTheta1})
+    if (text == to_string(o)) return o;
+  return std::nullopt;
+}
+
 StoppingThickness stopping_thickness(const PouliquenLaw& law, double angle) {
   check(law);
   check_angle(angle);

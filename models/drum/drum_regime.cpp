@@ -69,6 +69,13 @@ const char* to_string(DrumRegime regime) {
   return "?";
 }
 
+std::array<RegimeBoundary, 4> regime_boundaries(const DrumRegimeThresholds& t) {
+  return {{{"slumping | rolling", t.slumping_to_rolling},
+           {"rolling | cascading", t.rolling_to_cascading},
+           {"cascading | cataracting", t.cascading_to_cataracting},
+           {"centrifuging (outer layer)", t.centrifuging}}};
+}
+
 DrumRegimeAssessment assess_drum_regime(const Drum& drum, const DrumRegimeThresholds& t,
                                         std::optional<double> angle_of_repose) {
   if (!(0.0 < t.slumping_to_rolling && t.slumping_to_rolling < t.rolling_to_cascading &&

@@ -103,6 +103,15 @@ void require_flow_factor(double ff) {
 
 }  // namespace
 
+const char* arching_label(ArchingOutcome o) {
+  switch (o) {
+    case ArchingOutcome::critical_width: return "cohesive arch below B_c";
+    case ArchingOutcome::no_cohesive_arch: return "no cohesive arch";
+    case ArchingOutcome::no_gravity_outlet: return "no gravity outlet";
+  }
+  return "";
+}
+
 const char* to_string(ArchingOutcome o) {
   switch (o) {
     case ArchingOutcome::critical_width: return "critical width";

@@ -85,6 +85,12 @@ double beverloo_slot_rate(double rho, double b, double slot_length, double d, do
          effective_width(slot_length, k, d);
 }
 
+double rose_tanaka_factor(double theta, double phi_d) {
+  require_angle(theta);
+  require_angle(phi_d);
+  return theta < 0.5 * kPi - phi_d ? std::pow(std::tan(theta) * std::tan(phi_d), -0.35) : 1.0;
+}
+
 double hourglass_rate(FlowGeometry g, double rho, double b, double theta, double phi,
                       double r1, double gravity) {
   require_angle(theta);

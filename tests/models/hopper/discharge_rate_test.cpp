@@ -80,6 +80,18 @@ TEST(HopperDischarge, BrownRichardsCoefficientTable) {
               1.0, 0.01);
 }
 
+// Rose & Tanaka (1956, The Engineer 202) as Nedderman (1992, Statics and Kinematics of Granular
+// Materials, ch. 10) and reduced_models.md section 2 item 1 give it: F = (tan theta tan phi_d)^-0.35
+// below theta = 90 deg - phi_d, else 1. 1.212 at theta = 30 deg, phi_d = 45 deg is that published
+// form evaluated by hand (0.57735^-0.35); no tabulated value of the paper was at hand to cite.
+TEST(HopperDischarge, RoseTanakaHopperFactor) {
+  EXPECT_NEAR(rose_tanaka_factor(30 * kDeg, 45 * kDeg), 1.212, 0.0005);
+  EXPECT_DOUBLE_EQ(rose_tanaka_factor(45 * kDeg, 45 * kDeg), 1.0);  // continuous at the stagnant zone
+  EXPECT_DOUBLE_EQ(rose_tanaka_factor(60 * kDeg, 45 * kDeg), 1.0);  // flatter: a flat bottom
+  EXPECT_GT(rose_tanaka_factor(15 * kDeg, 45 * kDeg), rose_tanaka_factor(30 * kDeg, 45 * kDeg));  // steeper, faster
+  EXPECT_THROW(rose_tanaka_factor(0.0, 45 * kDeg), std::invalid_argument);
+}
+
 // T7: the flat-bottomed slot by Brown's theory, 1.023, against Beverloo's empirical C2 = 1.03;
 // and the seed hopper by Brown, 13.7 kg/s per metre (item 6).
 TEST(HopperDischarge, T7FlatSlotAndSeedHopper) {
