@@ -48,7 +48,7 @@ class CelChuteAdapter final : public CelSceneAdapter {
             {"thickness_mid_ramp", "m"}};
   }
 
-  std::vector<double> sample() const override {
+  std::vector<double> sample() override {
     const auto& s = run().solver();
     const double width = chute_.width;
     return {s.time(), width * s.kinetic_energy(), width * s.total_mass(), width * s.discharge().total(),

@@ -37,7 +37,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
     return {{"time", "s"}, {"surface_angle", "deg"}, {"kinetic_energy", "J"}, {"mass", "kg"}};
   }
 
-  std::vector<double> sample() const override {
+  std::vector<double> sample() override {
     const auto& s = run().solver();
     const auto surface = cel::drum_surface(s, section_, kSurfaceSpan);
     return {s.time(), surface.slope_angle / kDeg, drum_.length * s.kinetic_energy(), drum_.length * s.total_mass()};

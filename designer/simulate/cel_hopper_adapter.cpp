@@ -1,6 +1,7 @@
 #include "designer/simulate/cel_hopper_adapter.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "designer/simulate/cel_scene_adapter.hpp"
 #include "designer/simulate/hopper_discharge.hpp"
@@ -55,9 +56,17 @@ class CelHopperAdapter final : public CelSceneAdapter {
     return discharge(series).stop_reason(rows_of(series));
   }
 
-  std::vector<double> sample() const override {
+  void plan(SceneRunOptions& run_options) override {
+    CelSceneAdapter::plan(run_options);
+    run_options.save_scene = [this](Hdf5File& f) { flow_line_.save(f, "/scene/flow_line"); };
+  }
+
+  void restore(const Hdf5File& f) override { flow_line_.restore(f, "/scene/flow_line"); }
+
+  std::vector<double> sample() override {
     const double depth = run().scene().section_depth_factor * slot_;  // kg/m of the section -> kg
     const auto& s = run().solver();
+    if (run().phase() == cel::ScenePhase::event) flow_line_.add(s.time(), flow_line());
     return {s.time(), depth * s.discharge().total(), depth * s.total_mass(), depth * s.kinetic_energy()};
   }
 
@@ -90,15 +99,16 @@ class CelHopperAdapter final : public CelSceneAdapter {
     }
     results.emplace_back("arching", Estimate{to_string(state), "", std::nullopt, std::nullopt, label + "; " + d.describe(),
                                              Rung::L2, ""});
-    // Flow pattern from the velocity field at mid-height of the converging section.
-    const double knee = (0.5 * hopper_.bin_width - 0.5 * hopper_.outlet_width) / std::tan(hopper_.semi_angle);
-    const WallSpeedRatio ratio = wall_to_centre_speed_ratio(
-        cel::speed_profile(s, 0.5 * knee, cel::hopper_centre_line(hopper_, section_)));
+    // Flow pattern from the velocity field at mid-height of the converging section, over the
+    // steady window (the whole run after the opening without one).
+    const WallSpeedRatio ratio = q.found ? flow_line_.ratio(q.window_start, q.window_end)
+                                         : flow_line_.ratio(t_event, std::numeric_limits<double>::infinity());
     if (!arched && ratio.measured) {
       results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt, label, Rung::L2, ""});
       results.emplace_back("wall_to_centre_speed_ratio",
                            Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
-                                    "node speeds at mid-height of the converging section, end of run", Rung::L2, ""});
+                                    "node speeds at mid-height of the converging section, averaged over the steady "
+                                    "window", Rung::L2, ""});
     }
     results.emplace_back("discharged_mass", Estimate{f * s.discharge().total() * slot_, "kg", std::nullopt,
                                                      std::nullopt, label + ", " + section_text() + ", x slot length",
@@ -149,7 +159,7 @@ class CelHopperAdapter final : public CelSceneAdapter {
         "Measured as on every rung: q_m over the steady window of 50 ms batches (MSER, 95 % batch-means "
         "interval); \"arched\" when less than 2 % of rho_b W sqrt(g W) leaves for 0.5 s and the bed is "
         "still; flow pattern: mass flow when the wall-side node moves at more than 10 % of the "
-        "centreline speed at mid-height of the converging section.",
+        "centreline speed at mid-height of the converging section, averaged over the steady window.",
         "No cohesion in the hypoplastic law: a continuum arch is frictional only (errs toward flow)."};
   }
 
@@ -166,6 +176,12 @@ class CelHopperAdapter final : public CelSceneAdapter {
     return d;
   }
 
+  // The node speeds along the flow-pattern line now.
+  SpeedProfile flow_line() const {
+    const double knee = (0.5 * hopper_.bin_width - 0.5 * hopper_.outlet_width) / std::tan(hopper_.semi_angle);
+    return cel::speed_profile(run().solver(), 0.5 * knee, cel::hopper_centre_line(hopper_, section_));
+  }
+
   HopperDischarge::Rows rows_of(const TimeSeries& series) const {
     return discharge_rows(series, kTime, kDischarged, kMassInHopper, kKineticEnergy);
   }
@@ -174,6 +190,7 @@ class CelHopperAdapter final : public CelSceneAdapter {
   cel::HopperSection section_;
   double slot_;
   HopperDischarge discharge_;
+  SpeedProfileSeries flow_line_;  // sampled after the opening, on the run's time axis
 };
 
 }  // namespace

@@ -25,7 +25,7 @@ class CelSceneAdapter : public SceneAdapter {
   CelSceneAdapter(const SimulationRequest& request, cel::CelScene scene, double sample_interval);
 
   // One row of the time series (its first value is the time).
-  virtual std::vector<double> sample() const = 0;
+  virtual std::vector<double> sample() = 0;
   // A non-empty reason ends the run before its time is up (the flow has come to rest), unless
   // --time was given.
   virtual std::string stop(const TimeSeries&) const { return {}; }

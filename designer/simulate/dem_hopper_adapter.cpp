@@ -1,6 +1,7 @@
 #include "designer/simulate/dem_hopper_adapter.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -58,7 +59,10 @@ class DemHopperAdapter final : public SceneAdapter {
             {"particles_in_domain", ""}, {"mass_in_domain", "kg"},    {"kinetic_energy", "J"}};
   }
 
-  void restore(const Hdf5File& f) override { restore_hopper_scene(scene_, f); }
+  void restore(const Hdf5File& f) override {
+    restore_hopper_scene(scene_, f);
+    flow_line_.restore(f, "/scene/flow_line");
+  }
 
   // The fill at the opening (a restored run: as saved).
   double fill_mass() const { return scene_.fill.inserted_mass - scene_.fill.trimmed_mass - scene_.fill.sunk_mass; }
@@ -69,19 +73,23 @@ class DemHopperAdapter final : public SceneAdapter {
     run.duration = request_.end_time.value_or(scene_.default_duration);
     run.sample_interval = kSampleInterval;
     run.snapshot_interval = scene_.snapshot_interval;
-    const DemEngine& e = *engine_;
-    const double t_open = scene_.opening_time;
-    run.sample = [&e, t_open] {
+    run.sample = [this] {
+      const DemEngine& e = *engine_;
+      const double t_open = scene_.opening_time;
       double out = 0.0;
       for (const auto& ev : e.outlet_sink()->events())
         if (ev.time > t_open) out += ev.mass;
+      flow_line_.add(e.time() - t_open, flow_line());
       return std::vector<double>{e.time(), e.time() - t_open, out, static_cast<double>(e.particles().size()),
                                  e.particles().total_mass(), e.kinetic_energy()};
     };
     discharge_.fill_mass = fill_mass();
     if (!request_.end_time)  // a given --time is run to its end
       run.stop = [this](const TimeSeries& s) { return discharge_.stop_reason(rows_of(s)); };
-    run.save_scene = [this](Hdf5File& f) { save_hopper_scene(scene_, f); };
+    run.save_scene = [this](Hdf5File& f) {
+      save_hopper_scene(scene_, f);
+      flow_line_.save(f, "/scene/flow_line");
+    };
   }
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
@@ -111,15 +119,16 @@ class DemHopperAdapter final : public SceneAdapter {
       record.verdict.reasons.push_back("no steady discharge window yet: run longer (--time)");
     }
     results.emplace_back("arching", label(to_string(state), "DEM; " + discharge_.describe()));
-    // Flow pattern from the speeds across the converging section at mid-height.
-    const double r = scene_.slab.radius;
-    const WallSpeedRatio ratio =
-        wall_to_centre_speed_ratio(speed_profile(engine_->particles(), 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r));
+    // Flow pattern from the speeds across the converging section at mid-height, over the steady
+    // window (the whole run without one).
+    const WallSpeedRatio ratio = rate.found ? flow_line_.ratio(rate.window_start, rate.window_end)
+                                            : flow_line_.ratio(0.0, std::numeric_limits<double>::infinity());
     if (!arched && ratio.measured) {
       results.emplace_back("flow_pattern", label(ratio.label(), "DEM; " + describe_flow_pattern()));
       results.emplace_back("wall_to_centre_speed_ratio",
                            Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
-                                    "particle speeds at mid-height of the converging section, end of run", Rung::L3, ""});
+                                    "particle speeds at mid-height of the converging section, averaged over the "
+                                    "steady window", Rung::L3, ""});
     }
     const FlowOrder order = layer_order();
     results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
@@ -195,10 +204,17 @@ class DemHopperAdapter final : public SceneAdapter {
     return flow_order(out_bands, left_bands);
   }
 
+  // The particle speeds along the flow-pattern line now.
+  SpeedProfile flow_line() const {
+    const double r = scene_.slab.radius;
+    return speed_profile(engine_->particles(), 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
+  }
+
   std::string describe_flow_pattern() const {
     const double r = scene_.slab.radius;
     return format("mass flow when the speed beside the wall is above %.2g of the centre line's, at mid-height of "
-                  "the converging section (z = %.3g m; particles within %.3g mm of it, bins of %.3g mm)",
+                  "the converging section over the steady window (z = %.3g m; particles within %.3g mm of it, "
+                  "bins of %.3g mm)",
                   kMassFlowSpeedRatio, 0.5 * scene_.slab.bin_bottom(), 2e3 * r, 2e3 * r);
   }
 
@@ -222,6 +238,7 @@ class DemHopperAdapter final : public SceneAdapter {
   DemHopperScene scene_;
   std::optional<DemEngine> engine_;
   HopperDischarge discharge_;
+  SpeedProfileSeries flow_line_;  // sampled on the rows' time axis (after the opening)
 };
 
 }  // namespace
