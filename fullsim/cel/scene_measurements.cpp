@@ -4,48 +4,6 @@
 #include <cmath>
 
 namespace feedflow::cel {
-namespace {
-
-// Least-squares slope of y(x) over the samples [first, last).
-double slope(const std::vector<DischargeSample>& s, std::size_t first, std::size_t last) {
-  if (last <= first + 1) return 0.0;
-  double mx = 0.0, my = 0.0;
-  const double n = static_cast<double>(last - first);
-  for (std::size_t k = first; k < last; ++k) mx += s[k].time, my += s[k].mass;
-  mx /= n, my /= n;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = first; k < last; ++k) {
-    sxy += (s[k].time - mx) * (s[k].mass - my);
-    sxx += (s[k].time - mx) * (s[k].time - mx);
-  }
-  return sxx > 0.0 ? sxy / sxx : 0.0;
-}
-
-}  // namespace
-
-DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass) {
-  const auto& h = ledger.history();
-  DischargeRate r;
-  std::size_t first = 0;
-  while (first < h.size() && h[first].time < start) ++first;
-  std::size_t last = first;
-  while (last < h.size() && initial_mass - h[last].mass > 0.2 * initial_mass) ++last;
-  if (last <= first + 4) return r;
-  r.window_start = h[first].time;
-  r.window_end = h[last - 1].time;
-  r.rate = slope(h, first, last);
-  r.low = r.high = r.rate;
-  const std::size_t q = (last - first) / 4;
-  for (int k = 0; k < 4; ++k) {
-    const double s = slope(h, first + k * q, first + (k + 1) * q);
-    r.low = std::min(r.low, s);
-    r.high = std::max(r.high, s);
-  }
-  const std::size_t tail = h.size() - std::max<std::size_t>((h.size() - first) / 4, 2);
-  r.final_rate = slope(h, std::max(tail, first), h.size());
-  return r;
-}
-
 SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x) {
   const auto& g = solver.grid();
   const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);

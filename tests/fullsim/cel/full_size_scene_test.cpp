@@ -10,6 +10,7 @@
 #include "fullsim/cel/chute_scene.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
 namespace {

@@ -12,6 +12,7 @@
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
 namespace {
