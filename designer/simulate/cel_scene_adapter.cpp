@@ -64,7 +64,7 @@ CelSceneAdapter::CelSceneAdapter(const SimulationRequest& request, cel::CelScene
   model_label_ = model_label_of(c, scene_.options.remap);
 }
 
-Stepper* CelSceneAdapter::build(std::ostream&) {
+Stepper* CelSceneAdapter::build(std::ostream&, ProgressSink&) {
   run_.emplace(scene_, material_model(request_.case_data));
   return &*run_;
 }

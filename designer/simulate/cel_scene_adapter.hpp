@@ -16,7 +16,7 @@ namespace feedflow {
 class CelSceneAdapter : public SceneAdapter {
  public:
   std::string what() const override { return "the scene"; }
-  Stepper* build(std::ostream& log) override;
+  Stepper* build(std::ostream& log, ProgressSink& progress) override;
   void plan(SceneRunOptions& run) override;
 
  protected:

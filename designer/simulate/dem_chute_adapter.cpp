@@ -54,7 +54,7 @@ class DemChuteAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the bin"; }
 
-  Stepper* build(std::ostream& log) override {
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
     const bool fresh = request_.restart.empty();
     log << "inclined plane scene plan: periodic slab " << scene_.spec().slab_depth * 1e3 << " mm across the ramp "
         << "(stands for the " << chute_.width * 1e3 << " mm ramp; no lateral spill), ramp frame with tilted "
@@ -65,7 +65,7 @@ class DemChuteAdapter final : public SceneAdapter {
         << " mm, saw-tooth no-slip ramp (mesh), particles leaving the ramp end removed; ends when the kinetic "
            "energy shows the flow has stopped\n";
     if (fresh) {
-      if (scene_.fill(log).interrupted) return nullptr;
+      if (scene_.fill(log, &progress).interrupted) return nullptr;
       scene_.open_gate(log);
       release_ = scene_.engine().time();
     }

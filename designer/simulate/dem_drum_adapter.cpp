@@ -72,7 +72,7 @@ class DemDrumAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the drum"; }
 
-  Stepper* build(std::ostream& log) override {
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
     const bool fresh = request_.restart.empty();
     const auto& spec = scene_.spec();
     log << "drum scene plan: "
@@ -84,7 +84,7 @@ class DemDrumAdapter final : public SceneAdapter {
         << (fresh ? scene_.rain().describe() + " (the fill line)" : std::string("rain-fall (restart: the fill is skipped)"))
         << "; the shell starts after settling; ends when the angle has converged\n";
     if (fresh) {
-      if (scene_.fill(log).interrupted) return nullptr;
+      if (scene_.fill(log, &progress).interrupted) return nullptr;
       scene_.start_rotation(log);
     }
     return &scene_.engine();

@@ -47,11 +47,11 @@ class DemHopperAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the hopper"; }
 
-  Stepper* build(std::ostream& log) override {
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
     describe_hopper_scene(scene_, log);
     engine_.emplace(hopper_scene_structure(scene_));
     if (!request_.restart.empty()) return &*engine_;
-    return fill_hopper_scene(scene_, *engine_, request_.progress, log) ? &*engine_ : nullptr;
+    return fill_hopper_scene(scene_, *engine_, &progress, log) ? &*engine_ : nullptr;
   }
 
   std::vector<TimeSeriesColumn> columns() const override {

@@ -78,7 +78,7 @@ DemEngine hopper_scene_structure(const DemHopperScene& s) {
   return engine;
 }
 
-bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, bool progress, std::ostream& log) {
+bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, ProgressSink* progress, std::ostream& log) {
   RainFillSettings rain = s.slab.rain(s.density, s.bands, s.seed);
   rain.progress = progress;
   s.fill = rain_fill(engine, rain, log);

@@ -45,7 +45,7 @@ DemHopperScene hopper_scene_from_case(const Case& c);
 DemEngine hopper_scene_structure(const DemHopperScene& scene);
 // A new run: the structure rain-filled, settled and trimmed, and the gate opened (at the
 // settled time). False when Ctrl-C stopped the fill (nothing to continue from).
-bool fill_hopper_scene(DemHopperScene& scene, DemEngine& engine, bool progress, std::ostream& log);
+bool fill_hopper_scene(DemHopperScene& scene, DemEngine& engine, ProgressSink* progress, std::ostream& log);
 // The scene's plan lines.
 void describe_hopper_scene(const DemHopperScene& scene, std::ostream& log);
 

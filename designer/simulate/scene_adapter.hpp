@@ -23,8 +23,8 @@ class SceneAdapter {
   // Builds the scene. A new run: up to its origin (a DEM fill rained in, settled and trimmed,
   // the gate opened). A restart: its structure only (walls, meshes, grid), which the caller
   // restores from the checkpoint. Returns null when Ctrl-C stopped the fill (nothing to
-  // continue from). Writes the scene's plan to `log`.
-  virtual Stepper* build(std::ostream& log) = 0;
+  // continue from). Writes the scene's plan to `log`, the fill's progress to `progress`.
+  virtual Stepper* build(std::ostream& log, ProgressSink& progress) = 0;
   // The columns of the scene's time series.
   virtual std::vector<TimeSeriesColumn> columns() const = 0;
   // A restart: the scene's own data from the checkpoint's /scene group (saved by the

@@ -5,6 +5,7 @@
 #include "designer/design/verdict_builder.hpp"
 #include "designer/equipment/equipment_registry.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
+#include "designer/simulate/restart_identity.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
 
@@ -37,7 +38,8 @@ SimulationOutcome interrupted_while_filling(const std::string& what) {
 SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest& request) {
   std::ostringstream discard;
   std::ostream& log = request.log ? *request.log : discard;
-  Stepper* stepper = adapter.build(log);
+  TerminalProgress progress = TerminalProgress::for_terminal(!request.progress);
+  Stepper* stepper = adapter.build(log, progress);
   if (!stepper) return interrupted_while_filling(adapter.what());
 
   SceneRunOptions run;
@@ -45,17 +47,22 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   run.out = request.out;
   run.restart = request.restart;
   run.log = request.log;
-  TerminalProgress progress = TerminalProgress::for_terminal(!request.progress);
   run.progress = &progress;
+  const std::vector<InputValue> identity = restart_identity(request.case_data, request.solver);
   if (!request.restart.empty())
     restoring(request, [&] {
       const Hdf5File f(request.restart, Hdf5File::Mode::read);
+      check_restart_identity(identity, f);
       run.previous = restore_scene_run(*stepper, f, run.columns);
       adapter.restore(f);
     });
   if (!request.restart.empty())
     log << "restarted from " << request.restart.string() << " at t = " << stepper->time() << " s\n";
   adapter.plan(run);
+  run.save_scene = [&identity, save = std::move(run.save_scene)](Hdf5File& f) {
+    save_restart_identity(identity, f);
+    if (save) save(f);
+  };
   const SceneRunResult result = run_scene(*stepper, run);
 
   SimulationOutcome out;

@@ -67,16 +67,18 @@ TEST_F(SimulateCel, HopperRunsAndRestartsBitIdentically) {
   EXPECT_EQ(slurp(dir_ / "resumed/timeseries.csv"), slurp(dir_ / "straight/timeseries.csv"));
 }
 
-// A checkpoint of another grid is refused as bad input (exit 2) naming --restart.
+// A checkpoint of another grid is refused as bad input (exit 2) naming --restart and the
+// setting that differs, with both values.
 TEST_F(SimulateCel, RestartFromAnotherGridIsRefused) {
   const auto first = run_feedflow(kHopper + "--time 0.01s --out first", dir_);
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  const auto r = run_feedflow(
-      "simulate cases/pilot_hopper.toml --solver cel --set cel.cell_size=25mm --time 0.01s "
-      "--restart first/checkpoint.h5 --out other", dir_);
+  const auto r = run_feedflow(kHopper + "--set cel.cell_size=25mm --time 0.01s --restart first/checkpoint.h5 --out other",
+                              dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--restart"), std::string::npos);
-  EXPECT_NE(r.err.find("another grid"), std::string::npos);
+  EXPECT_NE(r.err.find("cel.cell_size"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("20 mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("25 mm"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -94,8 +94,10 @@ void DrumScene::rebuild(DemCheckpoint checkpoint) {
   engine_->prepare(quiet);
 }
 
-const FillReport& DrumScene::fill(std::ostream& log) {
-  fill_report_ = rain_fill(*engine_, rain(), log);
+const FillReport& DrumScene::fill(std::ostream& log, ProgressSink* progress) {
+  RainFillSettings settings = rain();
+  settings.progress = progress;
+  fill_report_ = rain_fill(*engine_, settings, log);
   if (fill_report_.interrupted) return fill_report_;
   engine_->run_steps(1);  // the list rebuilt after the trim: the bed can be checkpointed
   if (fill_report_.trimmed_count == 0)

@@ -58,7 +58,7 @@ class DrumScene {
   RainFillSettings rain() const;
   // Rain-fall, settling, trimming to the fill line (logs each phase). Returns the fill's
   // report; `interrupted` when Ctrl-C stopped it (nothing to continue from).
-  const FillReport& fill(std::ostream& log);
+  const FillReport& fill(std::ostream& log, ProgressSink* progress = nullptr);
   // The shell turns from now on; the sampling clock starts.
   void start_rotation(std::ostream& log);
 

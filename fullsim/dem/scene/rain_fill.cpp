@@ -159,6 +159,10 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     while (report.inserted_mass + sphere_mass <= due_mass * (1.0 + 1e-12) &&
            report.inserted_mass + 0.5 * sphere_mass < s.target_mass &&
            report.inserted_count < s.target_count) {
+      if (report.inserted_count % 1024 == 0 && interrupt_requested()) {
+        report.interrupted = true;
+        return;
+      }
       bool placed = false;
       for (int a = 0; a < s.attempts && !placed; ++a) {
         Vec3 x;
@@ -187,11 +191,18 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   };
 
   insert_batch();
+  if (report.interrupted) return report;
   engine.prepare(log);
   const double goal = std::isfinite(s.target_mass)
                           ? s.target_mass
                           : static_cast<double>(std::min<std::size_t>(s.target_count, 1u << 30)) * sphere_mass;
-  ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
+  SilentProgress silent;
+  ProgressSink& progress = s.progress ? *s.progress : silent;
+  progress.begin("DEM fill", goal, "kg");
+  struct FinishOnReturn {
+    ProgressSink& sink;
+    ~FinishOnReturn() { sink.finish(); }
+  } finish_progress{progress};
   double next_note = 0.1 * goal;
   const auto wall_start = ProgressLine::Clock::now();
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
@@ -200,6 +211,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
       return report;
     }
     insert_batch();
+    if (report.interrupted) return report;
     progress.update(report.inserted_mass);
     if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
       const double elapsed =
