@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <iostream>
 
-#include "fullsim/common/interrupt_request.hpp"
+#include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
 

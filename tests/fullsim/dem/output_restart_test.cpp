@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "fullsim/common/hdf5_file.hpp"
-#include "fullsim/common/interrupt_request.hpp"
 #include "fullsim/dem/dem_run_with_output.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
+#include "models/os/interrupt_request.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
