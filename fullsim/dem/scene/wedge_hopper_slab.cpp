@@ -141,7 +141,7 @@ std::string WedgeHopperSlab::describe() const {
                 "%.4g m, slab depth %.4g mm (%s)\n",
                 in_degrees(semi_angle), outlet_width * 1e3, bin_width * 1e3, fill_height,
                 fill_top(), bin_bottom(), depth * 1e3,
-                periodic() ? "periodic front/back"
+                periodic()              ? "periodic front/back"
                 : depth < 2.0 * radius * (1.0 + 1e-3)
                     ? "one layer between front and back planes; centres in the mid-plane stay "
                       "there, so these carry no load (as the seed's periodic 3 mm slab)"
