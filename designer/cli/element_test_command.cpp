@@ -12,11 +12,11 @@
 #include "designer/case/material_library.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
-#include "fullsim/common/atomic_file.hpp"
 #include "models/core/errors.hpp"
 #include "models/hypoplastic/element_tests.hpp"
 #include "models/hypoplastic/stress_invariants.hpp"
 #include "models/material/bulk_compressibility.hpp"
+#include "models/os/atomic_file.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_parser.hpp"
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "designer/design/hopper_snapshot.hpp"
-#include "fullsim/common/atomic_file.hpp"
 #include "models/core/errors.hpp"
+#include "models/os/atomic_file.hpp"
 #include "reports/document/report_content.hpp"
 #include "reports/document/report_html.hpp"
 #include "reports/document/report_pdf.hpp"

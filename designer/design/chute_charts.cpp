@@ -3,11 +3,10 @@
 #include <numbers>
 
 #include "designer/design/chute_check.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Chart stop_against_angle(const Chute& chute, const Material& m, const StoppingThicknessModel& stop) {
   const auto& s = *m.surface_flow;
@@ -29,16 +28,16 @@ Chart stop_against_angle(const Chute& chute, const Material& m, const StoppingTh
         hi = std::max(hi, t.thickness);
       }
     }
-    band.x.push_back(angle / kDeg);
+    band.x.push_back(angle / kDegree);
     band.y.push_back(lo * 1e3);
     band.y_upper.push_back(std::min(hi, 5 * nominal.thickness) * 1e3);
-    line.x.push_back(angle / kDeg);
+    line.x.push_back(angle / kDegree);
     line.y.push_back(nominal.thickness * 1e3);
   }
   c.series = {band, line};
   const auto design = stop.evaluate(pouliquen_law_of(s), m, chute.angle);
   if (design.outcome == DepositOutcome::Deposit)
-    c.series.push_back({"design angle", SeriesStyle::marker, {chute.angle / kDeg}, {design.thickness * 1e3}, {}, 6});
+    c.series.push_back({"design angle", SeriesStyle::marker, {chute.angle / kDegree}, {design.thickness * 1e3}, {}, 6});
   c.note = "No layer stops above theta2; below theta1 nothing flows. The band spans the uncertainty of theta1, "
            "theta2 and L (upper edge clipped at 5 x the nominal value).";
   return c;

@@ -8,12 +8,11 @@
 #include "models/chute/cohesive_slope.hpp"
 #include "models/core/band.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Estimate length_estimate(double value, double low, double high, std::string model, Rung rung) {
   return Estimate{value, "m", low, high, std::move(model), rung, "mm"};
@@ -89,7 +88,7 @@ std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s) {
       for (double c : {-1.0, 1.0}) {
         PouliquenLaw law = pouliquen_law_of(s);
         law.theta1 = std::max(0.0, s.theta1 + a * s.theta_uncertainty);
-        law.theta2 = std::max(law.theta1 + 0.5 * kDeg, s.theta2 + b * s.theta_uncertainty);
+        law.theta2 = std::max(law.theta1 + 0.5 * kDegree, s.theta2 + b * s.theta_uncertainty);
         law.length = s.stop_length * (1.0 + c * s.stop_length_uncertainty);
         laws.push_back(law);
       }

@@ -4,12 +4,10 @@
 #include <numbers>
 
 #include "designer/design/drum_check.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 // Angle of repose against speed over the rolling range.
 Chart angle_against_speed(const Drum& drum, const Material& m, const DrumRegimeAssessment& regime) {
@@ -25,13 +23,13 @@ Chart angle_against_speed(const Drum& drum, const Material& m, const DrumRegimeA
     at.speed = bottom + (top - bottom) * i / 29.0;
     const AngleOfRepose a = rolling_angle_band(at, m);
     line.x.push_back(at.speed / kRpm);
-    line.y.push_back(a.nominal / kDeg);
+    line.y.push_back(a.nominal / kDegree);
     band.x.push_back(at.speed / kRpm);
-    band.y.push_back(a.low / kDeg);
-    band.y_upper.push_back(a.high / kDeg);
+    band.y.push_back(a.low / kDegree);
+    band.y_upper.push_back(a.high / kDegree);
   }
   const double design = rolling_angle_band(drum, m).nominal;
-  chart.series = {band, line, {"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {design / kDeg}, {}, 6}};
+  chart.series = {band, line, {"design speed", SeriesStyle::marker, {drum.speed / kRpm}, {design / kDegree}, {}, 6}};
   chart.note = "The band spans the flowing-layer thickness (c_delta) and +- the uncertainty of theta1 and theta2.";
   return chart;
 }

@@ -10,13 +10,11 @@
 #include "models/core/band.hpp"
 #include "models/core/errors.hpp"
 #include "models/drum/rolling_layer.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 // The flowing layer of the material: mu(I) matched to its Pouliquen law mid-way between theta1
 // and theta2, grains of size d50.
@@ -57,7 +55,7 @@ void regime_results(const DrumRegimeThresholds& t, const DrumRegimeAssessment& r
 void angle_results(const Drum& drum, const Material& m, const DrumRegimeThresholds& t, Estimates& results) {
   const AngleOfRepose angle = rolling_angle_band(drum, m);
   results.emplace_back("dynamic_angle_of_repose",
-                       Estimate{angle.nominal / kDeg, "deg", angle.low / kDeg, angle.high / kDeg,
+                       Estimate{angle.nominal / kDegree, "deg", angle.low / kDegree, angle.high / kDegree,
                                 "mu(I) flowing layer with end-wall friction", Rung::L0, ""});
   Band slip;
   for (double a : {angle.low, angle.high}) slip.add(assess_drum_regime(drum, t, a).no_slip_friction);

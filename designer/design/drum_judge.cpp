@@ -6,12 +6,12 @@
 #include "designer/design/estimate_reading.hpp"
 #include "designer/design/judge.hpp"
 #include "designer/design/verdict_builder.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 constexpr double kNearBoundary = 1.25;  // a regime within 25 % of a boundary in Fr is marginal
 
 void judge_regime(const Drum& drum, const DesignTargets& t, const Estimates& es, VerdictBuilder& v) {

@@ -7,11 +7,10 @@
 
 #include "models/hopper/bin_stresses.hpp"
 #include "models/hopper/hopper_slice_stresses.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::vector<double> range(double from, double to, int points) {
   std::vector<double> v;
@@ -23,8 +22,8 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
                            const FlowPatternVerdict& pattern) {
   Chart c{"critical_outlet_width_vs_semi_angle", "Critical outlet width against semi-angle",
           {"semi-angle", "deg"}, {"critical outlet width", "mm"}, {}, ""};
-  const double top = std::min(60.0 * kDeg, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDeg);
-  const auto angles = range(5.0 * kDeg, top, 23);
+  const double top = std::min(60.0 * kDegree, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDegree);
+  const auto angles = range(5.0 * kDegree, top, 23);
   const auto corners = material_variants(m, *h.wall_friction_angle, true);
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
   // One band per model over the corners of the material's uncertainty.
@@ -34,7 +33,7 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
   ChartSeries arch{"static arch H_a", SeriesStyle::dashed, {}, {}, {}, 1};
   const auto mm_or_gap = [](double w) { return std::isfinite(w) ? w * 1e3 : NAN; };
   for (double theta : angles) {
-    const double x = theta / kDeg;
+    const double x = theta / kDegree;
     const auto e = evaluate_hopper(h, theta, h.outlet_width, m, nominal_variant, models);
     double j_lo = e.jenike.width, j_hi = e.jenike.width;
     double a_lo = e.static_arch ? e.static_arch->width : NAN, a_hi = a_lo;
@@ -70,8 +69,8 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
   for (double y : uppers)
     if (std::isfinite(y)) tallest = std::max(tallest, y);
   c.series.push_back({"mass-flow limit", SeriesStyle::dashed,
-                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg}, {0.0, tallest}, {}, 2});
-  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}, 6});
+                      {pattern.limit.nominal / kDegree, pattern.limit.nominal / kDegree}, {0.0, tallest}, {}, 2});
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDegree}, {h.outlet_width * 1e3}, {}, 6});
   c.note = "Each model's band spans the material's uncertainty (delta, wall friction, flow function). The "
            "design outlet must sit above the bands with the safety factor; Jenike errs wide (safe side).";
   return c;
@@ -115,16 +114,16 @@ Chart pattern_chart(const Hopper& h, const HopperMaterial& m, const FlowPatternV
   const double delta = m.flow.effective_friction_angle;
   ChartSeries band{"limit band", SeriesStyle::band, {}, {}, {}, 0};
   ChartSeries line{"mass-flow limit", SeriesStyle::line, {}, {}, {}, 0};
-  for (double phi : range(0.0, std::min(delta - 1.0 * kDeg, 45.0 * kDeg), 30)) {
+  for (double phi : range(0.0, std::min(delta - 1.0 * kDegree, 45.0 * kDegree), 30)) {
     const auto limit = mass_flow_limit(g, delta, phi);
-    band.x.push_back(phi / kDeg);
-    band.y.push_back(limit.low / kDeg);
-    band.y_upper.push_back(limit.high / kDeg);
-    line.x.push_back(phi / kDeg);
-    line.y.push_back(limit.nominal / kDeg);
+    band.x.push_back(phi / kDegree);
+    band.y.push_back(limit.low / kDegree);
+    band.y_upper.push_back(limit.high / kDegree);
+    line.x.push_back(phi / kDegree);
+    line.y.push_back(limit.nominal / kDegree);
   }
   c.series = {band, line,
-              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDeg}, {h.semi_angle / kDeg}, {}, 6}};
+              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDegree}, {h.semi_angle / kDegree}, {}, 6}};
   c.note = "Below the line: mass flow; above it: funnel flow. " + pattern.limit.model + ".";
   return c;
 }

@@ -5,21 +5,20 @@
 #include <stdexcept>
 
 #include "models/hopper/discharge_rate.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Flow pattern, its limit and margin over the box; the flow factor.
 void pattern_results(const Hopper& h, const HopperAssessment& a, Estimates& results) {
   const FlowPatternVerdict& p = a.pattern;
   results.emplace_back("flow_pattern", labelled(to_string(p.pattern), p.limit.model));
-  results.emplace_back("mass_flow_limit_angle", banded(p.limit.nominal / kDeg, "deg", Band{a.limit.low / kDeg, a.limit.high / kDeg},
+  results.emplace_back("mass_flow_limit_angle", banded(p.limit.nominal / kDegree, "deg", Band{a.limit.low / kDegree, a.limit.high / kDegree},
                                                        p.limit.model, Rung::L0));
-  const Band margin{(a.limit.low - h.semi_angle) / kDeg, (a.limit.high - h.semi_angle) / kDeg};
+  const Band margin{(a.limit.low - h.semi_angle) / kDegree, (a.limit.high - h.semi_angle) / kDegree};
   results.emplace_back("flow_pattern_margin",
-                       banded(p.margin / kDeg, "deg", margin,
+                       banded(p.margin / kDegree, "deg", margin,
                               "mass-flow limit angle - semi-angle (negative in funnel flow)", Rung::L0));
   results.emplace_back("flow_pattern_boundary",
                        labelled(p.near_boundary ? kNearBoundary : kClearOfBoundary, p.reason));

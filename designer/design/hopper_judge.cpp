@@ -8,12 +8,11 @@
 #include "designer/design/verdict_builder.hpp"
 #include "models/hopper/critical_outlet.hpp"
 #include "models/hopper/flow_pattern.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::string mm(double metres) { return format_quantity(metres, "mm", 3); }
 std::string deg(double radians) { return format_quantity(radians, "deg", 3); }
@@ -60,11 +59,11 @@ void judge_pattern(const Hopper& h, const DesignTargets& t, const Estimates& es,
     v.add(finding(VerdictStatus::fail, "flow_pattern",
                   required + " flow required, but the hopper gives " + *got + " flow" + where, margin,
                   margin ? std::optional<double>(0.0) : std::nullopt));
-  } else if (*got == to_string(FlowPattern::mass) && margin && std::get<double>(margin->value) * kDeg < t.mass_flow_margin) {
+  } else if (*got == to_string(FlowPattern::mass) && margin && std::get<double>(margin->value) * kDegree < t.mass_flow_margin) {
     v.add(finding(VerdictStatus::marginal, "flow_pattern_margin",
                   "mass flow, but only " + shown(*margin) + " below the limit (margin " + deg(t.mass_flow_margin) +
                       " required)" + where,
-                  margin, t.mass_flow_margin / kDeg));
+                  margin, t.mass_flow_margin / kDegree));
   } else if (const Estimate* near = find_estimate(es, "flow_pattern_boundary");
              near && label_of(es, "flow_pattern_boundary") == kNearBoundary) {
     v.add(finding(VerdictStatus::marginal, "flow_pattern_boundary", *got + " flow, near the boundary: " + near->model,
@@ -72,7 +71,7 @@ void judge_pattern(const Hopper& h, const DesignTargets& t, const Estimates& es,
   } else {
     const std::string by = margin ? ", margin " + shown(*margin, std::abs(std::get<double>(margin->value))) : "";
     // The margin held against the required one in mass flow, against the boundary in funnel flow.
-    const double held = *got == to_string(FlowPattern::mass) ? t.mass_flow_margin / kDeg : 0.0;
+    const double held = *got == to_string(FlowPattern::mass) ? t.mass_flow_margin / kDegree : 0.0;
     v.add(finding(VerdictStatus::pass, "flow_pattern", *got + " flow as required" + where + by, margin,
                   margin ? std::optional<double>(held) : std::nullopt));
   }

@@ -8,12 +8,12 @@
 #include "fullsim/cel/drum_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
 #include "fullsim/common/steady_angle.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kSurfaceSpan = 0.5;  // the surface is fitted over |x - x_c| <= this x R
 enum Column { kTime, kAngle, kKineticEnergy, kMass };
 
@@ -40,7 +40,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
   std::vector<double> sample() override {
     const auto& s = run().solver();
     const auto surface = cel::drum_surface(s, section_, kSurfaceSpan);
-    return {s.time(), surface.slope_angle / kDeg, drum_.length * s.kinetic_energy(), drum_.length * s.total_mass()};
+    return {s.time(), surface.slope_angle / kDegree, drum_.length * s.kinetic_energy(), drum_.length * s.total_mass()};
   }
 
   std::string stop(const TimeSeries& series) const override {
@@ -57,7 +57,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
       const SteadyAngle a = steady_angle(angles(result.series), drum_angle_windows(drum_.speed));
       if (a.found) {
         record.results.emplace_back("dynamic_angle_of_repose",
-                                    Estimate{a.angle / kDeg, "deg", a.low / kDeg, a.high / kDeg,
+                                    Estimate{a.angle / kDegree, "deg", a.low / kDegree, a.high / kDegree,
                                              model_label() + ": slope of the free surface, mean over the steady window "
                                                              "(band: 2 SD of the sampled angle)",
                                              Rung::L2, ""});
@@ -120,7 +120,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
   std::vector<AngleSample> angles(const TimeSeries& series) const {
     std::vector<AngleSample> a;
     for (const auto& row : series.rows())
-      if (row[kTime] > run().event_time()) a.push_back({row[kTime] - run().event_time(), row[kAngle] * kDeg, true});
+      if (row[kTime] > run().event_time()) a.push_back({row[kTime] - run().event_time(), row[kAngle] * kDegree, true});
     return a;
   }
 

@@ -9,12 +9,12 @@
 #include "fullsim/dem/scene/drum_angle_watch.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDefaultRotation = 10.0;  // [s] of rotation at most (the seed's 10 s)
 constexpr double kSampleInterval = 0.02;   // [s]
 
@@ -58,7 +58,7 @@ DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
 DrumAngleWatch angle_watch(const Drum& drum) {
   const double period = drum.speed > 0.0 ? 2.0 * std::numbers::pi / drum.speed : 1e9;
   return DrumAngleWatch(0.5 * drum.diameter, std::max(0.5, 0.15 * period), std::max(0.5, 0.1 * period),
-                        1.0 * kDeg);
+                        1.0 * kDegree);
 }
 
 class DemDrumAdapter final : public SceneAdapter {
@@ -104,7 +104,7 @@ class DemDrumAdapter final : public SceneAdapter {
     for (const auto& row : run.previous.rows()) {  // a restarted run's samples (without the profile)
       DrumSample s;
       s.time = row[0];
-      s.angle = row[1] * kDeg;
+      s.angle = row[1] * kDegree;
       s.valid = row[2] > 0.5;
       s.state = {0.0, 0.0, row[3], row[4], row[5], row[6]};
       watch_.add(s);
@@ -118,7 +118,7 @@ class DemDrumAdapter final : public SceneAdapter {
     run.sample = [this] {
       const DrumSample s = scene_.sample();
       watch_.add(s);
-      return std::vector<double>{s.time, s.angle / kDeg, s.valid ? 1.0 : 0.0, s.state.airborne_fraction,
+      return std::vector<double>{s.time, s.angle / kDegree, s.valid ? 1.0 : 0.0, s.state.airborne_fraction,
                                  s.state.over_top_fraction, s.state.solid_body_fraction,
                                  s.state.shell_speed_ratio, s.kinetic_energy};
     };
@@ -140,7 +140,7 @@ class DemDrumAdapter final : public SceneAdapter {
     auto& results = record.results;
     if (measured && steady->angle != 0.0)
       results.emplace_back("dynamic_angle_of_repose",
-                           Estimate{steady->angle / kDeg, "deg", steady->low / kDeg, steady->high / kDeg,
+                           Estimate{steady->angle / kDegree, "deg", steady->low / kDegree, steady->high / kDegree,
                                     "DEM (" + law + "): mid-chord line of the free surface, mean over the steady "
                                     "window (band: 2 SD of the sampled angle)", Rung::L3, ""});
     DrumRegimeCall regime;
@@ -182,12 +182,12 @@ class DemDrumAdapter final : public SceneAdapter {
     for (const auto& s : watch_.samples())
       if (s.valid) {
         line.x.push_back(s.time);
-        line.y.push_back(s.angle / kDeg);
+        line.y.push_back(s.angle / kDegree);
       }
     chart.series.push_back(line);
     if (steady && steady->angle != 0.0)
       chart.series.push_back({"steady mean with 2 SD band", SeriesStyle::band, {steady->from, steady->to},
-                              {steady->low / kDeg, steady->low / kDeg}, {steady->high / kDeg, steady->high / kDeg}});
+                              {steady->low / kDegree, steady->low / kDegree}, {steady->high / kDegree, steady->high / kDegree}});
     if (const Estimate* e = find_estimate(record.results, reduced_model_key("dynamic_angle_of_repose")); e && e->is_number() && !line.x.empty())
       chart.series.push_back({"reduced model (feedflow design)", SeriesStyle::dashed, {0.0, line.x.back()},
                               {std::get<double>(e->value), std::get<double>(e->value)}, {}});

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kShapes[] = {"wedge", "conical"};
 }  // namespace
 
@@ -35,7 +35,7 @@ std::span<const FieldSpec<Hopper>> hopper_fields() {
       label_field<Hopper>("shape", &Hopper::shape, kShapes,
                           "wedge (plane flow, slot outlet) or conical (circular outlet)"),
       number_field<Hopper>("semi_angle", &Hopper::semi_angle, dim::angle, "deg",
-                           Range::open(0.0, 90.0 * kDeg),
+                           Range::open(0.0, 90.0 * kDegree),
                            "hopper wall angle measured from the vertical"),
       number_field<Hopper>("outlet_width", &Hopper::outlet_width, dim::length, "mm",
                            Range::positive(), "slot width (wedge) or outlet diameter (conical)"),
@@ -48,7 +48,7 @@ std::span<const FieldSpec<Hopper>> hopper_fields() {
                                     Range::positive(),
                                     "out-of-plane length of a wedge hopper's slot outlet"),
       optional_number_field<Hopper>("wall_friction_angle", &Hopper::wall_friction_angle,
-                                    dim::angle, "deg", Range::half_open(0.0, 90.0 * kDeg),
+                                    dim::angle, "deg", Range::half_open(0.0, 90.0 * kDegree),
                                     "wall friction angle of the material on the hopper wall "
                                     "(defaults to the material's)"),
   };

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "models/core/errors.hpp"
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {

@@ -4,10 +4,10 @@
 #include <numbers>
 
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 }
 
 HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& density) {
@@ -39,9 +39,9 @@ std::vector<MaterialVariant> material_variants(const HopperMaterial& m, double p
         if (a == 0 && b == 0 && c == 0) continue;
         if (corners_only && (a == 0 || b == 0 || c == 0)) continue;
         const double delta = std::clamp(f.effective_friction_angle + a * f.effective_friction_uncertainty,
-                                        1.0 * kDeg, 89.0 * kDeg);
+                                        1.0 * kDegree, 89.0 * kDegree);
         // The wall cannot be rougher than the material's internal friction.
-        const double wall = std::clamp(phi_w + b * f.wall_friction_uncertainty, 0.0, delta - 0.5 * kDeg);
+        const double wall = std::clamp(phi_w + b * f.wall_friction_uncertainty, 0.0, delta - 0.5 * kDegree);
         out.push_back({delta, wall, std::max(0.0, 1.0 + c * f.ff_uncertainty)});
       }
   return out;

@@ -15,12 +15,12 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <numbers>
 #include <random>
 #include <sstream>
 #include <tuple>
 
 #include "fullsim/dem/dem_engine.hpp"
+#include "models/units/angle.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace {
@@ -50,7 +50,7 @@ DemEngine& settled_bed(int law, int tilt = 0, int copy = 0) {
                                       CohesionLaw::none}
                    : ContactLawChoice{NormalLaw::hysteretic_nonlinear2, TangentialLaw::history,
                                       RollingLaw::cdt, CohesionLaw::none};
-  const double a = tilt * std::numbers::pi / 180.0;
+  const double a = tilt * kDegree;
   s.gravity = 9.81 * Vec3(std::sin(a), 0.0, -std::cos(a));
   const double spacing = 2.0 * kRadius;
   SimulationBox box{Vec3::Zero(), Vec3(kNx * spacing, kNy * spacing, (kNz + 4) * spacing),

@@ -1,11 +1,8 @@
-// Utilities of long runs: the progress line's ETA, the performance block, atomic files.
+// Utilities of long runs: the progress line's ETA and the performance block.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "fullsim/common/run_report.hpp"
 
@@ -66,23 +63,6 @@ TEST(RunReport, RendersPhasesAndShares) {
   EXPECT_DOUBLE_EQ(report.phase_seconds("pairs"), 6.5);
   { auto scope = report.time("output"); }
   EXPECT_GE(report.phase_seconds("output"), 0.0);
-}
-
-// An atomic write creates folders, replaces the old file whole and leaves no temporary behind;
-// an unwritable target throws and leaves nothing.
-TEST(AtomicFile, WritesWholeOrNothing) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "feedflow_atomic_test";
-  fs::remove_all(dir);
-  write_file_atomically(dir / "a" / "r.json", "first");
-  write_file_atomically(dir / "a" / "r.json", "second");
-  std::ifstream in(dir / "a" / "r.json");
-  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(content, "second");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir / "a"), fs::directory_iterator{}), 1);
-  std::ofstream(dir / "file") << "x";
-  EXPECT_THROW(write_file_atomically(dir / "file" / "r.json", "y"), std::runtime_error);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "fullsim/common/interrupt_request.hpp"
 #include "fullsim/common/scene_run.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
+#include "models/units/angle.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
@@ -21,7 +22,6 @@ namespace {
 
 using namespace dem_test;
 namespace fs = std::filesystem;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 fs::path scratch(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("feedflow_scenerun_" + std::to_string(::getpid()) + "_" + name);
@@ -85,11 +85,11 @@ TEST(StepperContract, FixedStepEngineMeetsTheStepGrid) {
 TEST(StepperContract, AdaptiveStepEngineStopsPastTheTimeAndAtItsEvent) {
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30.0 * kDeg;
+  h.semi_angle = 30.0 * kDegree;
   h.outlet_width = 0.06;
   h.fill_height = 0.35;
   h.bin_width = 0.3;
-  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDeg, {290.0, 0.7102}, 0.02);
+  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
   cel::CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));
   std::ostringstream log;
   run.prepare(log);
@@ -169,11 +169,11 @@ TEST(SceneRun, RestartedCelRunContinuesTheSameSeries) {
   const fs::path whole = scratch("cel_whole"), first = scratch("cel_first"), second = scratch("cel_second");
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30.0 * kDeg;
+  h.semi_angle = 30.0 * kDegree;
   h.outlet_width = 0.06;
   h.fill_height = 0.35;
   h.bin_width = 0.3;
-  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDeg, {290.0, 0.7102}, 0.02);
+  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
   scene.gravity.ramp_time = 0.3;
   scene.gravity.min_time = 0.35;
   const HypoplasticModel model = make_hypoplastic_model(loblolly_pine_table1());

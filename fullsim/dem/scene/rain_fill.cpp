@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "fullsim/common/interrupt_request.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
+#include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
 namespace {

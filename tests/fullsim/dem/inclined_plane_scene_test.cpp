@@ -6,18 +6,16 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <numbers>
 #include <set>
 #include <sstream>
 
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
+#include "models/units/angle.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The deposit height of a bin is its highest particle top above the surface, mid-ramp is the
 // mean over the middle 10 %, and particles off the ramp (in the bin, x < 0) do not count.
@@ -51,7 +49,7 @@ std::unique_ptr<InclinedPlaneScene> filled_plane(double angle_deg, std::ostream&
   s.material.particle_wall = testing::pine_table2_particle_wall();
   s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
   InclinedPlaneSpec spec;
-  spec.angle = angle_deg * kDeg;
+  spec.angle = angle_deg * kDegree;
   spec.ramp_length = 0.25;
   spec.bin_length = 0.07;
   spec.bin_height = 0.12;

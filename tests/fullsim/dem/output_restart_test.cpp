@@ -11,6 +11,7 @@
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
+#include "models/os/interrupt_request.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {

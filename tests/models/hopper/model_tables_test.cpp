@@ -15,11 +15,10 @@
 #include "models/hopper/flow_factor_models.hpp"
 #include "models/hopper/flow_pattern.hpp"
 #include "models/hopper/minimum_energy_discharge.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 template <class Row>
 void expect_well_formed(const ModelTable<Row>& table) {
@@ -57,9 +56,9 @@ TEST(ModelTables, WellFormedWithTheirDefaults) {
 // reduced_models.md for plane hoppers (-7 % .. +10.5 %).
 TEST(ModelTables, FlowFactorRows) {
   const auto& t = flow_factor_models();
-  const double enstad = t.at("enstad").evaluate(FlowGeometry::plane, 30 * kDeg, 50 * kDeg, 8.5 * kDeg);
-  EXPECT_DOUBLE_EQ(enstad, enstad_flow_factor(FlowGeometry::plane, 30 * kDeg, 50 * kDeg, 8.5 * kDeg));
-  EXPECT_NEAR(t.at("rsf").evaluate(FlowGeometry::plane, 30 * kDeg, 50 * kDeg, 8.5 * kDeg) / enstad, 1.0, 0.105);
+  const double enstad = t.at("enstad").evaluate(FlowGeometry::plane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree);
+  EXPECT_DOUBLE_EQ(enstad, enstad_flow_factor(FlowGeometry::plane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree));
+  EXPECT_NEAR(t.at("rsf").evaluate(FlowGeometry::plane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree) / enstad, 1.0, 0.105);
 }
 
 // The critical-outlet rows: the envelope is the larger estimate, and a cone (no static arch)
@@ -79,13 +78,13 @@ TEST(ModelTables, CriticalOutletRows) {
 // The discharge rows give the model functions' rates; Brown-Richards applies to wedges only.
 TEST(ModelTables, DischargeRows) {
   const auto rho = BulkDensity::constant(290);
-  const auto johanson = johanson_discharge(FlowGeometry::plane, 30 * kDeg, 0.06, 1.315, FlowFunction::cohesionless(), rho);
-  const DischargeInputs wedge{FlowGeometry::plane, 30 * kDeg, 0.06, johanson, 0.82e-3};
+  const auto johanson = johanson_discharge(FlowGeometry::plane, 30 * kDegree, 0.06, 1.315, FlowFunction::cohesionless(), rho);
+  const DischargeInputs wedge{FlowGeometry::plane, 30 * kDegree, 0.06, johanson, 0.82e-3};
   const auto& t = discharge_models();
   EXPECT_DOUBLE_EQ(t.at("johanson").evaluate(wedge)->rate, johanson.rate);
   EXPECT_DOUBLE_EQ(t.at("beverloo").evaluate(wedge)->rate, beverloo_slot_rate_per_metre(290, 0.06, 0.82e-3));
-  EXPECT_DOUBLE_EQ(t.at("brown").evaluate(wedge)->rate, brown_richards_rate_per_metre(290, 0.06, 30 * kDeg));
-  const DischargeInputs cone{FlowGeometry::conical, 30 * kDeg, 0.06, johanson, 0.82e-3};
+  EXPECT_DOUBLE_EQ(t.at("brown").evaluate(wedge)->rate, brown_richards_rate_per_metre(290, 0.06, 30 * kDegree));
+  const DischargeInputs cone{FlowGeometry::conical, 30 * kDegree, 0.06, johanson, 0.82e-3};
   EXPECT_FALSE(t.at("brown").evaluate(cone).has_value());
   EXPECT_DOUBLE_EQ(t.at("beverloo").evaluate(cone)->rate, beverloo_circular_rate(290, 0.06, 0.82e-3));
 }
@@ -94,16 +93,16 @@ TEST(ModelTables, DischargeRows) {
 // flow-pattern boundary: faster in mass flow, Beverloo itself past the mass-flow limit.
 TEST(ModelTables, RoseTanakaRow) {
   const auto rho = BulkDensity::constant(290);
-  const auto johanson = johanson_discharge(FlowGeometry::conical, 20 * kDeg, 0.1, 1.5, FlowFunction::cohesionless(), rho);
-  const double delta = 50 * kDeg, phi_w = 15 * kDeg;
+  const auto johanson = johanson_discharge(FlowGeometry::conical, 20 * kDegree, 0.1, 1.5, FlowFunction::cohesionless(), rho);
+  const double delta = 50 * kDegree, phi_w = 15 * kDegree;
   const double limit = mass_flow_limit(FlowGeometry::conical, delta, phi_w).nominal;
   const auto& t = discharge_models();
-  const DischargeInputs steep{FlowGeometry::conical, 20 * kDeg, 0.1, johanson, 1e-3, delta, phi_w};
+  const DischargeInputs steep{FlowGeometry::conical, 20 * kDegree, 0.1, johanson, 1e-3, delta, phi_w};
   const double beverloo = t.at("beverloo").evaluate(steep)->rate;
   EXPECT_NEAR(t.at("rose_tanaka").evaluate(steep)->rate / beverloo,
-              std::pow(std::tan(20 * kDeg) * std::tan(90 * kDeg - limit), -0.35), 1e-12);
+              std::pow(std::tan(20 * kDegree) * std::tan(90 * kDegree - limit), -0.35), 1e-12);
   EXPECT_GT(t.at("rose_tanaka").evaluate(steep)->rate, beverloo);
-  const DischargeInputs funnel{FlowGeometry::conical, limit + 5 * kDeg, 0.1, johanson, 1e-3, delta, phi_w};
+  const DischargeInputs funnel{FlowGeometry::conical, limit + 5 * kDegree, 0.1, johanson, 1e-3, delta, phi_w};
   EXPECT_DOUBLE_EQ(t.at("rose_tanaka").evaluate(funnel)->rate, t.at("beverloo").evaluate(funnel)->rate);
   EXPECT_FALSE(t.at("rose_tanaka").spans_band);  // the released rate band is unchanged
 }

@@ -1,4 +1,4 @@
-#include "fullsim/common/interrupt_request.hpp"
+#include "models/os/interrupt_request.hpp"
 
 #include <csignal>
 

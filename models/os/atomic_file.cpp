@@ -1,4 +1,4 @@
-#include "fullsim/common/atomic_file.hpp"
+#include "models/os/atomic_file.hpp"
 
 #include <unistd.h>
 
