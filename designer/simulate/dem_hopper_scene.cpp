@@ -6,18 +6,6 @@
 #include "models/core/errors.hpp"
 
 namespace feedflow {
-namespace {
-
-NormalLaw normal_law(const std::string& keyword) {
-  if (keyword.empty() || keyword == "hysteretic_nonlinear2") return NormalLaw::hysteretic_nonlinear2;
-  if (keyword == "hysteretic_nonlinear1") return NormalLaw::hysteretic_nonlinear1;
-  if (keyword == "hertz") return NormalLaw::hertz;
-  if (keyword == "hooke") return NormalLaw::hooke;
-  throw InputError("", "dem.normal_law", "unknown normal law '" + keyword + "'");
-}
-
-}  // namespace
-
 DemHopperScene hopper_scene_from_case(const Case& c) {
   const Hopper& h = std::get<Hopper>(c.equipment);
   if (!h.is_wedge())
@@ -28,7 +16,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
                      "the material '" + c.material.name + "' has no [dem] parameters (Table 2)");
   DemHopperScene s;
   s.settings.material = *c.material.dem;
-  s.settings.law.normal = normal_law(c.dem.normal_law);
+  s.settings.law = choose_contact_law(c.dem.normal_law);
   s.settings.quiet = true;
   if (c.dem.time_step) s.settings.requested_time_step = *c.dem.time_step;
   s.density = c.material.dem->particle.density;

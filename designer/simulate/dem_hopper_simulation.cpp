@@ -229,7 +229,7 @@ SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request) {
   a.push_back("the run ends when the steady rate's 95 % interval is within +-5 %, the hopper "
               "arches or empties, or the duration runs out: " +
               (result.stop_reason.empty() ? std::string("duration") : result.stop_reason));
-  if (scene.settings.law.normal != NormalLaw::hysteretic_nonlinear2)
+  if (!scene.settings.law.normal.is<HystereticNonlinear2>())
     a.push_back("normal contact law " + contact_law_name(scene.settings.law) +
                 " instead of the seed's hysteretic one ([dem] normal_law)");
   if (!scene.fill.settled) a.push_back("the fill had not settled below 1 mm/s when the gate opened");
