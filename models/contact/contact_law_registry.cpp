@@ -1,7 +1,7 @@
 #include "models/contact/contact_law_registry.hpp"
 
 #include <array>
-#include <utility>
+#include <vector>
 
 #include "models/core/errors.hpp"
 
@@ -58,10 +58,9 @@ PartChoice<List> choose(ContactSlot slot, std::string_view keyword, PartChoice<L
 // "hysteretic_nonlinear2, hysteretic_nonlinear1": the normal parts with a cohesion branch.
 template <class... Parts>
 std::string with_cohesion_branch(PartList<Parts...>) {
-  std::string s;
-  for (auto [has, keyword] : {std::pair{Parts::kHasCohesionBranch, Parts::kKeyword}...})
-    if (has) (s += s.empty() ? "" : ", ") += keyword;
-  return s;
+  std::vector<std::string_view> keywords;
+  ((Parts::kHasCohesionBranch ? keywords.push_back(Parts::kKeyword) : void()), ...);
+  return joined(keywords);
 }
 
 }  // namespace

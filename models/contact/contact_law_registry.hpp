@@ -49,10 +49,14 @@ constexpr auto choice_of() {
                         RollingParts::contains<Part>() + CohesionParts::contains<Part>() ==
                     1,
                 "a contact part is in exactly one slot's list");
-  if constexpr (NormalParts::contains<Part>()) return PartChoice<NormalParts>::of<Part>();
-  else if constexpr (TangentialParts::contains<Part>()) return PartChoice<TangentialParts>::of<Part>();
-  else if constexpr (RollingParts::contains<Part>()) return PartChoice<RollingParts>::of<Part>();
-  else return PartChoice<CohesionParts>::of<Part>();
+  if constexpr (NormalParts::contains<Part>())
+    return PartChoice<NormalParts>::of<Part>();
+  else if constexpr (TangentialParts::contains<Part>())
+    return PartChoice<TangentialParts>::of<Part>();
+  else if constexpr (RollingParts::contains<Part>())
+    return PartChoice<RollingParts>::of<Part>();
+  else
+    return PartChoice<CohesionParts>::of<Part>();
 }
 }  // namespace contact_registry_detail
 
