@@ -83,7 +83,6 @@ class PartChoice {
   constexpr bool is() const {
     return index_ == List::template index_of<Part>();
   }
-  constexpr std::size_t index() const { return index_; }
   constexpr std::string_view keyword() const { return List::kKeywords[index_]; }
   friend constexpr bool operator==(PartChoice, PartChoice) = default;
 
