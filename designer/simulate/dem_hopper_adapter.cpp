@@ -183,7 +183,7 @@ class DemHopperAdapter final : public SceneAdapter {
                 (run.end == RunEnd::stopped ? run.stop_reason : std::string("duration")));
     a.push_back("flow pattern as on every rung: " + describe_flow_pattern() + "; the layer bands' first-in-"
                 "first-out index is reported beside it");
-    if (scene_.settings.law.normal != NormalLaw::hysteretic_nonlinear2)
+    if (!scene_.settings.law.normal.is<HystereticNonlinear2>())
       a.push_back("normal contact law " + contact_law_name(scene_.settings.law) +
                   " instead of the seed's hysteretic one ([dem] normal_law)");
     if (!scene_.fill.settled) a.push_back("the fill had not settled below 1 mm/s when the gate opened");

@@ -185,17 +185,19 @@ void DemEngine::prepare(std::ostream& out) {
   // Kernels whose parameters make them vanish are not run at all.
   effective_law_ = settings_.law;
   skipped_.clear();
-  if (effective_law_.rolling != RollingLaw::none && dem.particle_particle.rolling_friction == 0.0 &&
+  if (!effective_law_.rolling.is<NoRolling>() && dem.particle_particle.rolling_friction == 0.0 &&
       dem.particle_wall.rolling_friction == 0.0) {
-    effective_law_.rolling = RollingLaw::none;
+    effective_law_.rolling = contact_part<NoRolling>;
     skipped_.push_back("rolling kernel skipped: mu_r = 0 in the P-P and P-W sets");
   }
-  if (effective_law_.tangential != TangentialLaw::none && dem.particle_particle.friction == 0.0 &&
-      dem.particle_wall.friction == 0.0 && effective_law_.rolling != RollingLaw::epsd2) {
-    effective_law_.tangential = TangentialLaw::none;
+  const bool rolling_reads_kt = effective_law_.rolling.visit(
+      [](auto r) { return decltype(r)::type::kReadsTangentialStiffness; });
+  if (!effective_law_.tangential.is<NoTangential>() && dem.particle_particle.friction == 0.0 &&
+      dem.particle_wall.friction == 0.0 && !rolling_reads_kt) {
+    effective_law_.tangential = contact_part<NoTangential>;
     skipped_.push_back("tangential kernel skipped: mu = 0 in the P-P and P-W sets");
   }
-  if (effective_law_.cohesion == CohesionLaw::none)
+  if (effective_law_.cohesion.is<NoCohesion>())
     skipped_.push_back("cohesion: none (normal force clipped at zero, no contact pulls)");
   kernel_ = make_force_kernel(effective_law_, dem);
 

@@ -46,10 +46,8 @@ DemEngine& settled_bed(int law, int tilt = 0, int copy = 0) {
   s.material.particle = {kRadius, 390.0};
   s.material.particle_particle = pine(0.5, 0.8);
   s.material.particle_wall = pine(0.2, 0.6);
-  s.law = law == 0 ? ContactLawChoice{NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt,
-                                      CohesionLaw::none}
-                   : ContactLawChoice{NormalLaw::hysteretic_nonlinear2, TangentialLaw::history,
-                                      RollingLaw::cdt, CohesionLaw::none};
+  s.law = law == 0 ? choose_contact_law("hertz", "mindlin", "cdt", "none")
+                   : choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "none");
   const double a = tilt * kDegree;
   s.gravity = 9.81 * Vec3(std::sin(a), 0.0, -std::cos(a));
   const double spacing = 2.0 * kRadius;

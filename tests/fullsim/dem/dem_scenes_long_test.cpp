@@ -23,7 +23,7 @@ DemSettings seed_particles(double wall_friction) {
   s.material.particle = {1.5e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
   s.material.particle_wall = testing::pine_table2_contact(wall_friction, 0.6);
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }
 

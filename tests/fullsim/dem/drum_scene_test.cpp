@@ -99,7 +99,7 @@ DemSettings twin_settings() {
   s.material.particle = {3e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
   s.material.particle_wall = testing::pine_table2_contact(std::tan(20 * kDegree), 0.6);
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }
 

@@ -45,7 +45,7 @@ TEST(DemEngine, ElasticGasConservesEnergy) {
   e.prepare(plan);
   EXPECT_NE(plan.str().find("rolling kernel skipped: mu_r = 0"), std::string::npos) << plan.str();
   EXPECT_NE(plan.str().find("tangential kernel skipped: mu = 0"), std::string::npos);
-  EXPECT_EQ(e.effective_law().rolling, RollingLaw::none);
+  EXPECT_TRUE(e.effective_law().rolling.is<NoRolling>());
   const double e0 = total_energy(e);
   s.requested_time_step = e.time_step() / 4.0;
   DemEngine fine(s, box, p);

@@ -47,7 +47,7 @@ std::unique_ptr<InclinedPlaneScene> filled_plane(double angle_deg, std::ostream&
   s.material.particle = {3e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
   s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   InclinedPlaneSpec spec;
   spec.angle = angle_deg * kDegree;
   spec.ramp_length = 0.25;
