@@ -106,6 +106,47 @@ Chart chart_from(const json& j) {
   return c;
 }
 
+json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+std::optional<double> optional_number_from(const json& j, const char* key) {
+  if (!j.contains(key) || j.at(key).is_null()) return std::nullopt;
+  return j.at(key).get<double>();
+}
+
+json finding_json(const Finding& f) {
+  return {{"status", f.status ? to_string(*f.status) : "note"},
+          {"quantity", f.quantity},
+          {"text", f.text},
+          {"value", optional_number(f.value)},
+          {"low", optional_number(f.low)},
+          {"high", optional_number(f.high)},
+          {"limit", optional_number(f.limit)},
+          {"unit", f.unit}};
+}
+
+Finding finding_from(const json& j) {
+  Finding f;
+  const std::string status = field(j, "status", "verdict.findings").get<std::string>();
+  if (status != "note") f.status = verdict_status_from_string(status);
+  f.quantity = j.value("quantity", "");
+  f.text = field(j, "text", "verdict.findings").get<std::string>();
+  f.value = optional_number_from(j, "value");
+  f.low = optional_number_from(j, "low");
+  f.high = optional_number_from(j, "high");
+  f.limit = optional_number_from(j, "limit");
+  f.unit = j.value("unit", "");
+  return f;
+}
+
+json verdict_json(const Verdict& v) {
+  json j = {{"status", to_string(v.status)}, {"reasons", v.reasons}};
+  if (!v.findings.empty()) {
+    j["findings"] = json::array();
+    for (const auto& f : v.findings) j["findings"].push_back(finding_json(f));
+  }
+  return j;
+}
+
 }  // namespace
 
 json to_json(const DesignRecord& r) {
@@ -139,7 +180,7 @@ json to_json(const DesignRecord& r) {
     results[name] = std::move(q);
   }
   j["results"] = std::move(results);
-  j["verdict"] = {{"status", to_string(r.verdict.status)}, {"reasons", r.verdict.reasons}};
+  j["verdict"] = verdict_json(r.verdict);
   j["charts"] = json::array();
   for (const auto& c : r.charts) j["charts"].push_back(chart_json(c));
   j["assumptions"] = r.assumptions;
@@ -174,6 +215,7 @@ DesignRecord design_record_from_json(const json& j) {
     const json& v = field(j, "verdict", "results");
     r.verdict.status = verdict_status_from_string(field(v, "status", "verdict").get<std::string>());
     r.verdict.reasons = field(v, "reasons", "verdict").get<std::vector<std::string>>();
+    for (const auto& f : v.value("findings", json::array())) r.verdict.findings.push_back(finding_from(f));
     r.wall_seconds = field(field(j, "timing", "results"), "wall_s", "timing").get<double>();
     const json sources = j.value("input_sources", json::object());
     for (auto& in : r.inputs)

@@ -6,7 +6,10 @@
 //    "inputs": {nested by dotted key, SI numbers or labels},
 //    "input_units": {dotted key: SI unit}, "input_sources": {dotted key: source},
 //    "results": {quantity: {"value", "unit", "low", "high", "model", "rung"}},
-//    "verdict": {"status", "reasons"},
+//    "verdict": {"status", "reasons",
+//                "findings": [{"status" (pass|marginal|fail|note), "quantity", "text", "value", "low",
+//                              "high", "limit", "unit"}] (when a judge made the verdict; numbers
+//                              or null, in "unit", the quantity's result unit)},
 //    "charts": [{"id", "title", "x": axis, "y": axis, "series": [...], "note"}],
 //    "assumptions": [...], "provenance": {"command_line"},
 //    "timing": {"wall_s"}}

@@ -1,10 +1,10 @@
 #include "designer/case/simulation_settings.hpp"
 
+#include "models/contact/contact_law_registry.hpp"
+
 namespace feedflow {
 
 namespace {
-constexpr std::string_view kNormalLaws[] = {"hysteretic_nonlinear2", "hysteretic_nonlinear1",
-                                            "hertz", "hooke"};
 constexpr std::string_view kRemapOrders[] = {"first",           "second",
                                              "second_stress",   "second_void_ratio",
                                              "second_density",  "second_momentum"};
@@ -30,7 +30,7 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
       whole_number(optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
                                             Range::closed(0.0, 4294967295.0),
                                             "seed of the rain-fall insertion (a whole number)")),
-      label_field<S>("normal_law", &S::normal_law, kNormalLaws,
+      label_field<S>("normal_law", &S::normal_law, NormalParts::kKeywords,
                      "normal contact law (default the seed's hysteretic_nonlinear2; hertz allows "
                      "a ~20x larger time step for reduced test twins)",
                      Presence::optional),

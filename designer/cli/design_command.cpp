@@ -77,9 +77,11 @@ void add_design_command(CLI::App& app, int& exit_code) {
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";
-    for (std::size_t i = 0; i < o.choices.size(); ++i)
-      model_help += (i ? "|" : "") + std::string(o.choices[i]);
-    model_help += " (default " + std::string(o.default_choice) + ")";
+    for (std::size_t i = 0; i < o.entries.size(); ++i)
+      model_help += (i ? "|" : "") + std::string(o.entries[i].name);
+    model_help += " (" + std::string(o.description) + ", default " + std::string(o.entries.front().name) + ")";
+    for (const auto& e : o.entries)
+      model_help += "\n      " + std::string(e.name) + ": " + std::string(e.summary) + " [" + to_string(e.rung) + "]";
   }
   command->add_option("--model", args->models, model_help)
       ->type_name("KEY=NAME")

@@ -19,6 +19,7 @@
 #include "models/hypoplastic/element_tests.hpp"
 #include "models/hypoplastic/stress_invariants.hpp"
 #include "models/material/bulk_compressibility.hpp"
+#include "models/os/atomic_file.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_parser.hpp"
 
@@ -76,22 +77,32 @@ nlohmann::ordered_json with_unit(double value, const char* unit) {
   return {{"value", value}, {"unit", unit}};
 }
 
-int run_element_test_command(const ElementTestArguments& args) {
+// The checked inputs of one element test: the law, the material's parameters and the start.
+struct ElementTestInputs {
+  ElementTestKind kind;
+  std::string material;
+  HypoplasticModel model;
+  double p0 = 0.0;
+  double e0 = 0.0;
+  double strain = 0.0;
+};
+
+HypoplasticVariant variant_of(const std::string& name) {
+  if (name == "gudehus-bauer") return HypoplasticVariant::gudehus_bauer;
+  if (name == "von-wolffersdorff") return HypoplasticVariant::von_wolffersdorff;
+  throw InputError("--variant", "", "unknown variant '" + name + "'; known: gudehus-bauer, von-wolffersdorff");
+}
+
+ElementTestInputs checked_inputs(const ElementTestArguments& args) {
   const auto kind = element_test_kind(args.test);
   if (!kind)
     throw InputError("--test", "", "unknown element test '" + args.test + "'; known: " + known_tests());
-  HypoplasticVariant variant;
-  if (args.variant == "gudehus-bauer")
-    variant = HypoplasticVariant::gudehus_bauer;
-  else if (args.variant == "von-wolffersdorff")
-    variant = HypoplasticVariant::von_wolffersdorff;
-  else
-    throw InputError("--variant", "", "unknown variant '" + args.variant +
-                                          "'; known: gudehus-bauer, von-wolffersdorff");
-  const double p0 = parse_option(args.p0, dim::pressure, "--p0");
-  if (!(p0 > 0.0)) throw InputError("--p0", "", "the initial mean pressure must be > 0, e.g. 2 kPa");
-  const double strain = parse_option(args.strain, dim::dimensionless, "--strain");
-  if (!(strain > 0.0 && strain <= 3.0))
+  const HypoplasticVariant variant = variant_of(args.variant);
+  ElementTestInputs in{*kind, {}, {}, 0.0, 0.0, 0.0};
+  in.p0 = parse_option(args.p0, dim::pressure, "--p0");
+  if (!(in.p0 > 0.0)) throw InputError("--p0", "", "the initial mean pressure must be > 0, e.g. 2 kPa");
+  in.strain = parse_option(args.strain, dim::dimensionless, "--strain");
+  if (!(in.strain > 0.0 && in.strain <= 3.0))
     throw InputError("--strain", "", "the strain must lie in (0, 300 %], e.g. 20 %");
   if (args.cycles < 1) throw InputError("--cycles", "", "need at least one cycle");
   if (args.samples < 2) throw InputError("--samples", "", "need at least two samples per stage");
@@ -99,37 +110,33 @@ int run_element_test_command(const ElementTestArguments& args) {
   const Material material = MaterialLibrary::standard().load(args.material);
   if (!material.hypoplastic)
     throw InputError("", args.material, "material has no [hypoplastic] section; element tests need it");
-  HypoplasticModel model;
+  in.material = material.name;
   try {
-    model = make_hypoplastic_model(*material.hypoplastic, variant);
+    in.model = make_hypoplastic_model(*material.hypoplastic, variant);
   } catch (const std::invalid_argument& e) {
     throw InputError(material.origin, "hypoplastic", e.what());
   }
-  const LimitVoidRatios limits = limit_void_ratios(model.parameters, p0);
-  const double e0 = args.e0.empty() ? limits.e_c : parse_option(args.e0, dim::dimensionless, "--e0");
-  if (!(e0 >= limits.e_d && e0 <= limits.e_i))
-    throw InputError("--e0", "", "void ratio " + format_number(e0) + " is outside the admissible range [e_d, e_i] = [" +
-                                     format_number(limits.e_d) + ", " + format_number(limits.e_i) +
-                                     "] at p0 = " + format_quantity(p0, "kPa"));
+  const LimitVoidRatios limits = limit_void_ratios(in.model.parameters, in.p0);
+  in.e0 = args.e0.empty() ? limits.e_c : parse_option(args.e0, dim::dimensionless, "--e0");
+  if (!(in.e0 >= limits.e_d && in.e0 <= limits.e_i))
+    throw InputError("--e0", "", "void ratio " + format_number(in.e0) +
+                                     " is outside the admissible range [e_d, e_i] = [" + format_number(limits.e_d) +
+                                     ", " + format_number(limits.e_i) + "] at p0 = " + format_quantity(in.p0, "kPa"));
+  return in;
+}
 
-  const ElementTestSetup setup{*kind, strain, args.cycles, args.samples};
-  const MaterialPointState initial = isotropic_state(p0, e0);
-  const auto path = run_element_test(model, initial, loading_stages(setup, initial));
-  const ElementTestSummary s = summarize_element_test(model, setup, path);
-
-  const std::string test_name(element_test_name(*kind));
-  const auto folder = output_folder(args.options, "element_test_" + test_name, "", false);
+std::string summary_json(const ElementTestArguments& args, const ElementTestInputs& in, const ElementTestSummary& s) {
   constexpr double deg = 180.0 / std::numbers::pi;
   nlohmann::ordered_json j;
-  j["material"] = material.name;
-  j["test"] = test_name;
+  j["material"] = in.material;
+  j["test"] = std::string(element_test_name(in.kind));
   j["variant"] = args.variant;
   j["convention"] = "Cauchy stress, tension positive; p = -tr(sigma)/3; strains are integrals of D";
-  j["initial"] = {{"mean_pressure", with_unit(p0, "Pa")}, {"void_ratio", with_unit(e0, "-")},
-                  {"strain", with_unit(strain, "-")}};
+  j["initial"] = {{"mean_pressure", with_unit(in.p0, "Pa")}, {"void_ratio", with_unit(in.e0, "-")},
+                  {"strain", with_unit(in.strain, "-")}};
   j["summary"] = {
       {"peak_friction_angle", with_unit(s.peak_friction_angle * deg, "deg")},
-      {"critical_friction_angle", with_unit(model.parameters.phi_c * deg, "deg")},
+      {"critical_friction_angle", with_unit(in.model.parameters.phi_c * deg, "deg")},
       {"final_stress_ratio", with_unit(s.final_stress_ratio, "-")},
       {"critical_stress_ratio", with_unit(s.critical_stress_ratio, "-")},
       {"final_mean_pressure", with_unit(s.final_mean_pressure, "Pa")},
@@ -140,7 +147,39 @@ int run_element_test_command(const ElementTestArguments& args) {
        {{"value", s.initial_stiffness}, {"unit", "Pa"}, {"definition", s.stiffness_name}}},
   };
   j["path_csv"] = "element_test.csv";
-  const std::string json = j.dump(2) + "\n";
+  return j.dump(2) + "\n";
+}
+
+void print_summary(const ElementTestArguments& args, const ElementTestInputs& in, const ElementTestSummary& s,
+                   const std::vector<std::filesystem::path>& written) {
+  std::cout << "Element test " << element_test_name(in.kind) << " of " << in.material << " (" << args.variant
+            << "), from p0 = " << format_quantity(in.p0, "kPa") << ", e0 = " << format_number(in.e0)
+            << ", to strain " << format_quantity(in.strain, "%") << "\n"
+            << "  peak friction angle       " << format_quantity(s.peak_friction_angle, "deg")
+            << " (phi_c " << format_quantity(in.model.parameters.phi_c, "deg") << ")\n"
+            << "  final stress ratio q/p    " << format_number(s.final_stress_ratio)
+            << " (critical " << format_number(s.critical_stress_ratio) << ")\n"
+            << "  final void ratio          " << format_number(s.final_void_ratio)
+            << " (e_c " << format_number(s.critical_void_ratio) << " at p = "
+            << format_quantity(s.final_mean_pressure, "kPa") << ")\n"
+            << "  K0 at the start           " << format_number(s.at_rest_ratio) << "\n"
+            << "  start tangent stiffness   " << format_quantity(s.initial_stiffness, "kPa")
+            << " (" << s.stiffness_name << ")\n"
+            << "Written: ";
+  for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
+  std::cout << '\n';
+}
+
+int run_element_test_command(const ElementTestArguments& args) {
+  const ElementTestInputs in = checked_inputs(args);
+  const ElementTestSetup setup{in.kind, in.strain, args.cycles, args.samples};
+  const MaterialPointState initial = isotropic_state(in.p0, in.e0);
+  const auto path = run_element_test(in.model, initial, loading_stages(setup, initial));
+  const ElementTestSummary s = summarize_element_test(in.model, setup, path);
+
+  const std::string test_name(element_test_name(in.kind));
+  const auto folder = output_folder(args.options, "element_test_" + test_name, "", false);
+  const std::string json = summary_json(args, in, s);
   std::vector<OutputFile> files;
   if (folder) {
     files.push_back({*folder / "element_test.csv", path_csv(path), "--out"});
@@ -152,25 +191,7 @@ int run_element_test_command(const ElementTestArguments& args) {
   if (folder) claimed.emplace(*folder, "--out");
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,
                                      args.options.verbose, claimed ? &*claimed : nullptr);
-  if (args.options.human_output()) {
-    std::cout << "Element test " << test_name << " of " << material.name << " (" << args.variant
-              << "), from p0 = " << format_quantity(p0, "kPa") << ", e0 = " << format_number(e0)
-              << ", to strain " << format_quantity(strain, "%") << "\n"
-              << "  peak friction angle       " << format_quantity(s.peak_friction_angle, "deg")
-              << " (phi_c " << format_quantity(model.parameters.phi_c, "deg") << ")\n"
-              << "  final stress ratio q/p    " << format_number(s.final_stress_ratio)
-              << " (critical " << format_number(s.critical_stress_ratio) << ")\n"
-              << "  final void ratio          " << format_number(s.final_void_ratio)
-              << " (e_c " << format_number(s.critical_void_ratio) << " at p = "
-              << format_quantity(s.final_mean_pressure, "kPa") << ")\n"
-              << "  K0 at the start           " << format_number(s.at_rest_ratio) << "\n"
-              << "  start tangent stiffness   " << format_quantity(s.initial_stiffness, "kPa")
-              << " (" << s.stiffness_name << ")\n"
-              << "Written: ";
-    for (std::size_t i = 0; i < written.size(); ++i)
-      std::cout << (i ? ", " : "") << written[i].string();
-    std::cout << '\n';
-  }
+  if (args.options.human_output()) print_summary(args, in, s, written);
   return 0;
 }
 

@@ -6,8 +6,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "fullsim/common/atomic_file.hpp"
 #include "models/core/errors.hpp"
+#include "models/os/atomic_file.hpp"
 
 namespace fs = std::filesystem;
 

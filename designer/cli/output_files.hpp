@@ -1,7 +1,7 @@
 #pragma once
 // Writing a command's output files all or none: results.json and results.txt in the output
 // folder, the --json copy (a file, or stdout with --json -), report files, the time series.
-// Every file is first staged beside its target (fullsim/common/atomic_file.hpp); then the
+// Every file is first staged beside its target (models/os/atomic_file.hpp); then the
 // --json - copy goes to stdout; then the files are put in place. A failure before that last
 // step leaves no file, no temporary and no folder the command created.
 #include <filesystem>

@@ -16,11 +16,11 @@
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
 #include "designer/design/case_inputs.hpp"
-#include "designer/simulate/cel_simulation.hpp"
-#include "designer/simulate/dem_simulation.hpp"
+#include "designer/simulate/simulation.hpp"
 #include "designer/simulate/solver_choice.hpp"
-#include "fullsim/common/interrupt_request.hpp"
 #include "models/core/errors.hpp"
+#include "models/os/atomic_file.hpp"
+#include "models/os/interrupt_request.hpp"
 #include "models/units/quantity_parser.hpp"
 #include "reports/results_json.hpp"
 #include "reports/text_summary.hpp"
@@ -76,7 +76,7 @@ int run_simulate(const SimulateArguments& args) {
   install_interrupt_handler();
   SimulationOutcome outcome;
   try {
-    outcome = choice.solver == Solver::dem ? simulate_with_dem(request) : simulate_with_cel(request);
+    outcome = simulate(request);
   } catch (...) {
     folder.discard_if_unused();  // a run that failed before writing anything leaves no folder
     throw;

@@ -102,6 +102,15 @@ std::vector<InputValue> case_inputs(const Case& c) {
   return out;
 }
 
+std::vector<InputValue> simulation_inputs(const Case& c) {
+  std::vector<DescribedInput> described;
+  append(described, "dem", dem_case_fields(), c.dem);
+  append(described, "cel", cel_case_fields(), c.cel);
+  std::vector<InputValue> out;
+  for (auto& d : described) out.push_back(std::move(d.value));
+  return out;
+}
+
 void describe_case(const Case& c, DesignRecord& record) {
   record.feedflow_version = kVersion;
   record.case_name = c.name;

@@ -10,6 +10,8 @@
 namespace feedflow {
 
 std::vector<InputValue> case_inputs(const Case& c);
+// The [dem] and [cel] settings that the case gives ("dem.slab_depth", "cel.cell_size", ...).
+std::vector<InputValue> simulation_inputs(const Case& c);
 
 // Fills what a record says of its case: version, name, kind, file, description and inputs.
 void describe_case(const Case& c, DesignRecord& record);

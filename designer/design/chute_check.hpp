@@ -1,13 +1,28 @@
 #pragma once
-// The chute design check: stopping thickness on the ramp (Pouliquen's law, L0) and the deposit
-// of a release from the bin (depth-averaged flow, L1), against the case's targets.
+// The chute design check: evaluate (stopping thickness on the ramp by the chosen law over the
+// uncertainty of theta1, theta2 and L, rung L0; the deposit of a release from the bin, rung
+// L1), judge (judge_chute: against the case's [design] targets) and explain (assumptions,
+// charts).
+#include <optional>
+#include <vector>
+
 #include "designer/case/case.hpp"
 #include "designer/design/model_choices.hpp"
-#include "designer/design/verdict_builder.hpp"
+#include "models/chute/deposit_models.hpp"
+#include "models/chute/stopping_thickness_models.hpp"
+#include "models/core/design_record.hpp"
 
 namespace feedflow {
 
-void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignRecord& record,
-                 VerdictBuilder& verdict);
+void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignRecord& record);
+
+// The corners of the uncertainty of theta1, theta2 and L of a material's surface-flow law.
+PouliquenLaw pouliquen_law_of(const SurfaceFlowProperties& s);
+std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s);
+
+// The chute's charts: stopping thickness against angle, and with a release the deposit profile,
+// the front and the velocity against time.
+std::vector<Chart> chute_charts(const Chute& chute, const Material& m, const StoppingThicknessModel& stop,
+                                const std::optional<ChuteDeposit>& deposit);
 
 }  // namespace feedflow

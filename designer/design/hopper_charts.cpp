@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "models/hopper/bin_stresses.hpp"
 #include "models/hopper/hopper_slice_stresses.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::vector<double> range(double from, double to, int points) {
   std::vector<double> v;
@@ -18,12 +18,12 @@ std::vector<double> range(double from, double to, int points) {
   return v;
 }
 
-Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
+Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const HopperModels& models,
                            const FlowPatternVerdict& pattern) {
   Chart c{"critical_outlet_width_vs_semi_angle", "Critical outlet width against semi-angle",
           {"semi-angle", "deg"}, {"critical outlet width", "mm"}, {}, ""};
-  const double top = std::min(60.0 * kDeg, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDeg);
-  const auto angles = range(5.0 * kDeg, top, 23);
+  const double top = std::min(60.0 * kDegree, std::max(h.semi_angle, pattern.limit.high) + 5.0 * kDegree);
+  const auto angles = range(5.0 * kDegree, top, 23);
   const auto corners = material_variants(m, *h.wall_friction_angle, true);
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
   // One band per model over the corners of the material's uncertainty.
@@ -33,7 +33,7 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
   ChartSeries arch{"static arch H_a", SeriesStyle::dashed, {}, {}, {}, 1};
   const auto mm_or_gap = [](double w) { return std::isfinite(w) ? w * 1e3 : NAN; };
   for (double theta : angles) {
-    const double x = theta / kDeg;
+    const double x = theta / kDegree;
     const auto e = evaluate_hopper(h, theta, h.outlet_width, m, nominal_variant, models);
     double j_lo = e.jenike.width, j_hi = e.jenike.width;
     double a_lo = e.static_arch ? e.static_arch->width : NAN, a_hi = a_lo;
@@ -69,14 +69,15 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Model
   for (double y : uppers)
     if (std::isfinite(y)) tallest = std::max(tallest, y);
   c.series.push_back({"mass-flow limit", SeriesStyle::dashed,
-                      {pattern.limit.nominal / kDeg, pattern.limit.nominal / kDeg}, {0.0, tallest}, {}, 2});
-  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDeg}, {h.outlet_width * 1e3}, {}, 6});
+                      {pattern.limit.nominal / kDegree, pattern.limit.nominal / kDegree}, {0.0, tallest}, {}, 2});
+  c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDegree}, {h.outlet_width * 1e3}, {}, 6});
   c.note = "Each model's band spans the material's uncertainty (delta, wall friction, flow function). The "
            "design outlet must sit above the bands with the safety factor; Jenike errs wide (safe side).";
   return c;
 }
 
-Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperEvaluation& nominal) {
+Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const HopperModels& models,
+                          const HopperEvaluation& nominal) {
   const bool wedge = h.is_wedge();
   const double length = wedge ? *h.slot_length : 1.0;
   Chart c{"mass_flow_rate_vs_outlet_width", "Discharge rate against outlet width", {"outlet width", "mm"},
@@ -87,19 +88,18 @@ Chart rate_against_outlet(const Hopper& h, const HopperMaterial& m, const Hopper
   const double to = std::max(2.5 * h.outlet_width, 2 * from);
   const auto widths = range(from, to, 25);
   const auto nominal_variant = material_variants(m, *h.wall_friction_angle).front();
-  for (const char* model : {"johanson", "beverloo", "brown"}) {
-    if (!wedge && std::string(model) == "brown") continue;
-    std::vector<std::string> setting{std::string("hopper.discharge=") + model};
-    const auto choice = ModelChoices::parse(setting);
-    ChartSeries s{model == std::string("johanson") ? "Johanson (cohesive)"
-                  : model == std::string("beverloo") ? "Beverloo"
-                                                     : "Brown-Richards",
-                  model == std::string("johanson") ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
+  const auto& rows = discharge_models().rows;
+  for (const DischargeModel& row : rows) {
+    HopperModels choice = models;  // the chosen flow factor, this discharge model
+    choice.discharge = &row;
+    ChartSeries s{std::string(row.legend), &row == &rows.front() ? SeriesStyle::line : SeriesStyle::dashed, {}, {}, {}};
     for (double w : widths) {
+      const HopperEvaluation e = evaluate_hopper(h, h.semi_angle, w, m, nominal_variant, choice);
+      if (e.rate_row != &row) break;  // the model does not apply to this hopper
       s.x.push_back(w * 1e3);
-      s.y.push_back(evaluate_hopper(h, h.semi_angle, w, m, nominal_variant, choice).rate * length);
+      s.y.push_back(e.rate * length);
     }
-    c.series.push_back(std::move(s));
+    if (!s.x.empty()) c.series.push_back(std::move(s));
   }
   c.series.push_back({"design outlet", SeriesStyle::marker, {h.outlet_width * 1e3}, {nominal.rate * length}, {}, 6});
   c.note = "Johanson goes to zero at the critical outlet width; the spread between the correlations is part of "
@@ -114,16 +114,16 @@ Chart pattern_chart(const Hopper& h, const HopperMaterial& m, const FlowPatternV
   const double delta = m.flow.effective_friction_angle;
   ChartSeries band{"limit band", SeriesStyle::band, {}, {}, {}, 0};
   ChartSeries line{"mass-flow limit", SeriesStyle::line, {}, {}, {}, 0};
-  for (double phi : range(0.0, std::min(delta - 1.0 * kDeg, 45.0 * kDeg), 30)) {
+  for (double phi : range(0.0, std::min(delta - 1.0 * kDegree, 45.0 * kDegree), 30)) {
     const auto limit = mass_flow_limit(g, delta, phi);
-    band.x.push_back(phi / kDeg);
-    band.y.push_back(limit.low / kDeg);
-    band.y_upper.push_back(limit.high / kDeg);
-    line.x.push_back(phi / kDeg);
-    line.y.push_back(limit.nominal / kDeg);
+    band.x.push_back(phi / kDegree);
+    band.y.push_back(limit.low / kDegree);
+    band.y_upper.push_back(limit.high / kDegree);
+    line.x.push_back(phi / kDegree);
+    line.y.push_back(limit.nominal / kDegree);
   }
   c.series = {band, line,
-              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDeg}, {h.semi_angle / kDeg}, {}, 6}};
+              {"design point", SeriesStyle::marker, {*h.wall_friction_angle / kDegree}, {h.semi_angle / kDegree}, {}, 6}};
   c.note = "Below the line: mass flow; above it: funnel flow. " + pattern.limit.model + ".";
   return c;
 }
@@ -147,13 +147,33 @@ Chart stress_chart(const Hopper& h, const HopperMaterial& m, const double design
   return c;
 }
 
+// Emptying at the steady rate, with the band's rates: a constant rate until the hopper is empty.
+Chart emptying_chart(double content, double rate, const Band& total) {
+  Chart emptying{"discharged_mass_vs_time", "Discharged mass against time", {"time", "s"},
+                 {"discharged mass", "kg"}, {}, ""};
+  for (const auto& [label, q, style] : {std::tuple{"steady discharge", rate, SeriesStyle::line},
+                                        std::tuple{"band, low rate", total.low, SeriesStyle::dashed},
+                                        std::tuple{"band, high rate", total.high, SeriesStyle::dashed}}) {
+    const double empty_at = content / q;
+    emptying.series.push_back({label, style, {0.0, empty_at, std::max(1.2 * content / total.low, empty_at)},
+                               {0.0, content, content}, {}});
+  }
+  emptying.note = "Reduced model: a constant rate until the hopper is empty; a simulation shows the start-up and "
+                  "the end of discharge.";
+  return emptying;
+}
+
 }  // namespace
 
-std::vector<Chart> hopper_charts(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
-                                 const HopperEvaluation& nominal, const FlowPatternVerdict& pattern) {
-  std::vector<Chart> charts{outlet_against_angle(h, m, models, pattern), rate_against_outlet(h, m, nominal),
-                            pattern_chart(h, m, pattern)};
+std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a) {
+  const HopperMaterial& m = a.material;
+  const HopperEvaluation& nominal = a.nominal();
+  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), rate_against_outlet(h, m, a.models, nominal),
+                            pattern_chart(h, m, a.pattern)};
   charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
+  const double length = h.is_wedge() ? *h.slot_length : 1.0;
+  const double rate = nominal.rate * length, content = material.bulk.density * h.filled_volume();
+  if (rate > 0.0) charts.push_back(emptying_chart(content, rate, a.rate.scaled(length)));
   return charts;
 }
 

@@ -1,15 +1,14 @@
 #pragma once
 // The hopper's report charts: critical outlet width against semi-angle, discharge against outlet
-// width, the flow-pattern chart and the stresses while emptying, each with the design point.
+// width (one curve per discharge model), the flow-pattern chart, the stresses while emptying and
+// the discharged mass against time, each with the design point.
 #include <vector>
 
-#include "designer/design/hopper_assessment.hpp"
+#include "designer/design/hopper_estimates.hpp"
 #include "models/core/chart.hpp"
-#include "models/hopper/flow_pattern.hpp"
 
 namespace feedflow {
 
-std::vector<Chart> hopper_charts(const Hopper& h, const HopperMaterial& m, const ModelChoices& models,
-                                 const HopperEvaluation& nominal, const FlowPatternVerdict& pattern);
+std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a);
 
 }  // namespace feedflow

@@ -1,14 +1,22 @@
 #pragma once
-// The hopper design check: flow pattern, flow factor, critical outlet width, discharge rate,
-// each with its band, judged against the case's [design] targets.
+// The hopper design check: evaluate (hopper_estimates: the models over the material's
+// uncertainty and the model alternatives), judge (judge_hopper: flow pattern, arching,
+// interlocking, throughput against the case's [design] targets) and explain (what the models
+// assume and which way each errs; the charts).
 #include "designer/case/case.hpp"
+#include "designer/design/hopper_estimates.hpp"
 #include "designer/design/model_choices.hpp"
-#include "designer/design/verdict_builder.hpp"
 #include "models/core/design_record.hpp"
 
 namespace feedflow {
 
-void check_hopper(const Case& c, const Hopper& hopper, const ModelChoices& models,
-                  DesignRecord& record, VerdictBuilder& verdict);
+// The chosen rows of the hopper's model tables.
+HopperModels hopper_models(const ModelChoices& choices);
+
+// Fills the record's results, verdict, charts and assumptions.
+void check_hopper(const Case& c, const Hopper& hopper, const ModelChoices& models, DesignRecord& record);
+
+// What the hopper models assume, and which way each number errs.
+std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a);
 
 }  // namespace feedflow

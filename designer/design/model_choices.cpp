@@ -4,60 +4,54 @@
 #include <vector>
 
 #include "designer/case/did_you_mean.hpp"
+#include "models/chute/deposit_models.hpp"
+#include "models/chute/stopping_thickness_models.hpp"
 #include "models/core/errors.hpp"
+#include "models/hopper/bulk_density_models.hpp"
+#include "models/hopper/critical_outlet_models.hpp"
+#include "models/hopper/discharge_models.hpp"
+#include "models/hopper/flow_factor_models.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kFlowFactor[] = {"enstad", "rsf"};
-constexpr std::string_view kCriticalOutlet[] = {"envelope", "jenike", "static_arch"};
-constexpr std::string_view kDischarge[] = {"johanson", "beverloo", "brown"};
-constexpr std::string_view kBulkDensity[] = {"compressible", "table", "constant"};
-constexpr std::string_view kStopping[] = {"pouliquen", "hybrid"};
-constexpr std::string_view kDeposit[] = {"l1", "none"};
+std::vector<ModelListing> listings() {
+  return {flow_factor_models().listing(),     critical_outlet_models().listing(),
+          discharge_models().listing(),       hopper_density_models().listing(),
+          stopping_thickness_models().listing(), chute_deposit_models().listing()};
+}
 
-constexpr ModelOption kOptions[] = {
-    {"hopper.flow_factor", "enstad", kFlowFactor,
-     "enstad: Enstad/Arnold-McLean closed form; rsf: Jenike's radial stress field (shooting)"},
-    {"hopper.critical_outlet", "envelope", kCriticalOutlet,
-     "envelope: the larger of Jenike's H(theta) and the static-arch H_a; or either alone"},
-    {"hopper.discharge", "johanson", kDischarge,
-     "johanson (cohesive, mass flow), beverloo (empirical) or brown (minimum energy, wedge)"},
-    {"hopper.bulk_density", "compressible", kBulkDensity,
-     "compressible: rho_b at the local stress from the Bauer law (or the material's table when it has no "
-     "hypoplastic parameters); table: the measured compressibility table; constant: the design density"},
-    {"chute.stopping_thickness", "pouliquen", kStopping,
-     "pouliquen: h_stop law; hybrid: Pouliquen plus the low-stress cohesion"},
-    {"chute.deposit", "l1", kDeposit,
-     "l1: depth-averaged release from the bin (rung L1); none: skip it"},
-};
+std::string joined(const std::vector<std::string_view>& names) {
+  std::string list;
+  for (const auto n : names) list += (list.empty() ? "" : ", ") + std::string(n);
+  return list;
+}
 
 }  // namespace
 
-std::span<const ModelOption> model_options() { return kOptions; }
+std::span<const ModelListing> model_options() {
+  static const std::vector<ModelListing> options = listings();
+  return options;
+}
 
 ModelChoices ModelChoices::parse(std::span<const std::string> settings) {
   ModelChoices c;
   std::vector<std::string_view> keys;
-  for (const auto& o : kOptions) keys.push_back(o.key);
+  for (const auto& o : model_options()) keys.push_back(o.key);
   for (const auto& s : settings) {
     const auto eq = s.find('=');
     if (eq == std::string::npos)
       throw InputError("--model", s, "expected key=name, e.g. --model hopper.flow_factor=rsf");
     const std::string key = s.substr(0, eq), name = s.substr(eq + 1);
-    const auto* option = std::find_if(std::begin(kOptions), std::end(kOptions),
-                                      [&](const ModelOption& o) { return o.key == key; });
-    if (option == std::end(kOptions)) {
-      std::string list;
-      for (const auto k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-      throw InputError("--model", key, "unknown model key" + did_you_mean(key, keys) + "; known: " + list);
-    }
-    if (std::find(option->choices.begin(), option->choices.end(), name) == option->choices.end()) {
-      std::string list;
-      for (const auto n : option->choices) list += (list.empty() ? "" : ", ") + std::string(n);
-      throw InputError("--model", key, "unknown model \"" + name + "\"" +
-                                           did_you_mean(name, option->choices) + "; choose " + list);
-    }
+    const auto options = model_options();
+    const auto option = std::find_if(options.begin(), options.end(), [&](const ModelListing& o) { return o.key == key; });
+    if (option == options.end())
+      throw InputError("--model", key, "unknown model key" + did_you_mean(key, keys) + "; known: " + joined(keys));
+    std::vector<std::string_view> names;
+    for (const auto& e : option->entries) names.push_back(e.name);
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw InputError("--model", key, "unknown model \"" + name + "\"" + did_you_mean(name, names) + "; choose " +
+                                           joined(names));
     c.chosen_[key] = name;
   }
   return c;
@@ -65,8 +59,8 @@ ModelChoices ModelChoices::parse(std::span<const std::string> settings) {
 
 std::string_view ModelChoices::operator[](std::string_view key) const {
   if (const auto it = chosen_.find(key); it != chosen_.end()) return it->second;
-  for (const auto& o : kOptions)
-    if (o.key == key) return o.default_choice;
+  for (const auto& o : model_options())
+    if (o.key == key) return o.entries.front().name;
   return {};
 }
 

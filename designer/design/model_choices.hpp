@@ -1,21 +1,19 @@
 #pragma once
-// Alternative models a user can select with `--model key=name` (e.g. hopper.flow_factor=rsf).
-// Every key has a default; unknown keys and names are input errors that list the choices.
+// Alternative models a user can select with `--model key=name` (e.g. hopper.flow_factor=rsf):
+// one key per model table (models/hopper, models/chute), one name per row. Every key has a
+// default (the table's first row); unknown keys and names are input errors that list the
+// choices.
 #include <map>
 #include <span>
 #include <string>
 #include <string_view>
 
+#include "models/core/model_table.hpp"
+
 namespace feedflow {
 
-struct ModelOption {
-  std::string_view key;                 // "hopper.flow_factor"
-  std::string_view default_choice;      // "enstad"
-  std::span<const std::string_view> choices;
-  std::string_view description;
-};
-
-std::span<const ModelOption> model_options();
+// Every model table's listing, in the order --model help shows them.
+std::span<const ModelListing> model_options();
 
 class ModelChoices {
  public:
@@ -23,6 +21,11 @@ class ModelChoices {
   static ModelChoices parse(std::span<const std::string> settings);
   // The chosen name for a key (the default when not set).
   std::string_view operator[](std::string_view key) const;
+  // The chosen row of a table (its default when not set).
+  template <class Row>
+  const Row& of(const ModelTable<Row>& table) const {
+    return table.at((*this)[table.key]);
+  }
 
  private:
   std::map<std::string, std::string, std::less<>> chosen_;

@@ -7,6 +7,15 @@
 
 namespace feedflow {
 
+// The two rules a number is judged by. The requirement is exact and the estimate has a band:
+// clear of the band is a pass, inside it (the value meets the requirement, its band does not)
+// marginal, the value itself short of it a fail.
+// Larger is better (a throughput): pass when low >= required, marginal when value >= required.
+VerdictStatus at_least(double value, double low, double required);
+// Smaller is better (a deposit, a critical width): pass when high <= allowed, marginal when
+// value <= allowed.
+VerdictStatus at_most(double value, double high, double allowed);
+
 class VerdictBuilder {
  public:
   void pass(std::string reason) { add(VerdictStatus::pass, std::move(reason)); }
@@ -15,9 +24,11 @@ class VerdictBuilder {
   // A reason that does not judge (e.g. a model that could not be applied).
   void note(std::string reason) { verdict_.reasons.push_back(std::move(reason)); }
   void add(VerdictStatus status, std::string reason);
+  // A reason with its quantity and numbers: judges when it has a status, notes otherwise. Its
+  // text becomes a reason as above, and the finding is kept in the verdict.
+  void add(Finding finding);
 
-  // Judges `value` (larger is better) against `required`, with the band's low end: pass when
-  // low >= required, marginal when value >= required, fail otherwise.
+  // at_least(value, low, required), for callers that add the reason themselves.
   VerdictStatus judge_at_least(double value, double low, double required);
 
   const Verdict& verdict() const { return verdict_; }

@@ -10,9 +10,8 @@ DemSettings dem_case_settings(const Case& c) {
                                              " has no [dem] parameters (seed Table 2); the DEM needs them");
   DemSettings s;
   s.material = *c.material.dem;
-  if (!c.dem.normal_law.empty()) s.law = choose_contact_law(c.dem.normal_law, "history", "cdt", "none");
+  s.law = choose_contact_law(c.dem.normal_law);
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
-  s.quiet = true;
   return s;
 }
 

@@ -2,21 +2,10 @@
 
 #include <cstdio>
 
-#include "fullsim/dem/dem_checkpoint.hpp"
+#include "designer/simulate/dem_case_settings.hpp"
 #include "models/core/errors.hpp"
 
 namespace feedflow {
-namespace {
-
-NormalLaw normal_law(const std::string& keyword) {
-  if (keyword.empty() || keyword == "hysteretic_nonlinear2") return NormalLaw::hysteretic_nonlinear2;
-  if (keyword == "hysteretic_nonlinear1") return NormalLaw::hysteretic_nonlinear1;
-  if (keyword == "hertz") return NormalLaw::hertz;
-  if (keyword == "hooke") return NormalLaw::hooke;
-  throw InputError("", "dem.normal_law", "unknown normal law '" + keyword + "'");
-}
-
-}  // namespace
 
 DemHopperScene hopper_scene_from_case(const Case& c) {
   const Hopper& h = std::get<Hopper>(c.equipment);
@@ -27,10 +16,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
     throw InputError(c.file, "material.dem",
                      "the material '" + c.material.name + "' has no [dem] parameters (Table 2)");
   DemHopperScene s;
-  s.settings.material = *c.material.dem;
-  s.settings.law.normal = normal_law(c.dem.normal_law);
-  s.settings.quiet = true;
-  if (c.dem.time_step) s.settings.requested_time_step = *c.dem.time_step;
+  s.settings = dem_case_settings(c);
   s.density = c.material.dem->particle.density;
   const double r = c.material.dem->particle.radius;
   s.slab = WedgeHopperSlab{h.semi_angle, h.outlet_width, h.bin_width, h.fill_height,
@@ -59,8 +45,6 @@ void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
   f.write("/scene/initial_layers", s.initial_layers, {s.initial_layers.size()}, "");
 }
 
-namespace {
-
 void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
   if (!f.exists("/scene/initial_ids"))
     throw InputError("--restart", "", f.path().string() + " is not a checkpoint of a DEM hopper scene");
@@ -80,38 +64,25 @@ void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
   s.initial_layers = f.read<double>("/scene/initial_layers");
 }
 
-}  // namespace
-
-std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& s, const SimulationRequest& request,
-                                              std::ostream& log) {
+void describe_hopper_scene(const DemHopperScene& s, std::ostream& log) {
   log << "DEM hopper scene (seed 3.1):\n" << s.slab.describe();
   log << "  skipped: the 3D rig (a slab; masses x " << s.depth_scale()
       << " = slot length / slab depth), the sliding side walls (a gate plane removed at the "
          "opening), the fall below the outlet (particles deleted 5 R under it, mass booked), "
          "the run after q_m has converged (95 % interval within +-5 %), an arch or emptying\n";
-  if (!request.restart.empty()) {
-    DemCheckpoint checkpoint;
-    try {
-      checkpoint = read_dem_checkpoint(request.restart);
-      const Hdf5File f(request.restart, Hdf5File::Mode::read);
-      restore_hopper_scene(s, f);
-    } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const InputError*>(&e)) throw;
-      throw InputError("--restart", "", e.what());
-    }
-    DemEngine engine(s.settings, std::move(checkpoint));
-    engine.add_mesh_wall(s.slab.wedge_mesh());
-    log << "  restart from " << request.restart.string() << " (fill skipped; gate opened at t = "
-        << s.opening_time << " s)\n";
-    engine.prepare(log);
-    return engine;
-  }
+}
+
+DemEngine hopper_scene_structure(const DemHopperScene& s) {
   DemEngine engine(s.settings, s.slab.box(), ParticleStore{});
   s.slab.add_walls(engine);
+  return engine;
+}
+
+bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, ProgressSink* progress, std::ostream& log) {
   RainFillSettings rain = s.slab.rain(s.density, s.bands, s.seed);
-  rain.progress = request.progress;
+  rain.progress = progress;
   s.fill = rain_fill(engine, rain, log);
-  if (s.fill.interrupted) return std::nullopt;
+  if (s.fill.interrupted) return false;
   // The gate goes at the next step; the bands are frozen as they are now.
   s.opening_time = engine.time();
   s.opening_step = engine.step();
@@ -123,7 +94,7 @@ std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& s, const Simulatio
   std::snprintf(line, sizeof line, "  gate removed at t = %.4g s (step %ld), %zu particles, %.6g kg in the slab\n",
                 s.opening_time, s.opening_step, p.size(), p.total_mass());
   log << line;
-  return engine;
+  return true;
 }
 
 }  // namespace feedflow

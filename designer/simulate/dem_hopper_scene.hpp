@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "designer/case/case.hpp"
-#include "designer/simulate/simulation_request.hpp"
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/dem/dem_engine.hpp"
 #include "fullsim/dem/scene/rain_fill.hpp"
@@ -41,14 +40,17 @@ struct DemHopperScene {
 // Throws InputError naming the key for a case the scene cannot build.
 DemHopperScene hopper_scene_from_case(const Case& c);
 
-// A new run: builds the walls and sink, rain-fills, settles, trims and opens the gate (at the
-// settled time). A restart: the checkpoint's particles, walls and sink, the wedge mesh, and
-// the scene's own data from its /scene group. Returns nullopt when Ctrl-C stopped the fill
-// (nothing to continue from).
-std::optional<DemEngine> prepare_hopper_scene(DemHopperScene& scene, const SimulationRequest& request,
-                                              std::ostream& log);
+// The engine with the slab's walls, wedge mesh and sink, and no particles (a restart restores
+// them from the checkpoint).
+DemEngine hopper_scene_structure(const DemHopperScene& scene);
+// A new run: the structure rain-filled, settled and trimmed, and the gate opened (at the
+// settled time). False when Ctrl-C stopped the fill (nothing to continue from).
+bool fill_hopper_scene(DemHopperScene& scene, DemEngine& engine, ProgressSink* progress, std::ostream& log);
+// The scene's plan lines.
+void describe_hopper_scene(const DemHopperScene& scene, std::ostream& log);
 
-// The scene's data into a checkpoint's /scene group.
+// The scene's data into a checkpoint's /scene group, and back.
 void save_hopper_scene(const DemHopperScene& scene, Hdf5File& checkpoint);
+void restore_hopper_scene(DemHopperScene& scene, const Hdf5File& checkpoint);
 
 }  // namespace feedflow

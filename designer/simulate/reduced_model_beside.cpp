@@ -5,17 +5,11 @@
 
 namespace feedflow {
 
-const Estimate* find_result(const DesignRecord& record, const std::string& name) {
-  for (const auto& [key, e] : record.results)
-    if (key == name) return &e;
-  return nullptr;
-}
-
 void add_reduced_model_results(const Case& c, const std::vector<std::string>& names,
                                DesignRecord& record) {
   const DesignRecord design = design_check(c);
   for (const auto& name : names)
-    if (const Estimate* e = find_result(design, name))
+    if (const Estimate* e = find_estimate(design.results, name))
       record.results.emplace_back(reduced_model_key(name), *e);
 }
 

@@ -14,7 +14,4 @@ namespace feedflow {
 void add_reduced_model_results(const Case& c, const std::vector<std::string>& names,
                                DesignRecord& record);
 
-// The named result of a record, or null.
-const Estimate* find_result(const DesignRecord& record, const std::string& name);
-
 }  // namespace feedflow

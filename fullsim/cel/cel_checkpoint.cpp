@@ -26,12 +26,9 @@ std::vector<V> unflatten(const std::vector<double>& d) {
 
 }  // namespace
 
-void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& run,
-                          const std::vector<std::vector<double>>& samples) {
+void write_cel_checkpoint(Hdf5File& f, const CelSceneRun& run) {
   const CelSolverState s = run.solver().state();
-  const auto temporary = std::filesystem::path(file.string() + ".part");
   {
-    Hdf5File f(temporary, Hdf5File::Mode::create);
     f.set_attribute("/", "format", std::string(kCelCheckpointFormat));
     f.set_attribute("/", "format_version", static_cast<std::int64_t>(kCelCheckpointVersion));
     const auto& g = run.solver().grid();
@@ -82,21 +79,42 @@ void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& 
     f.set_attribute("/run", "phase", static_cast<std::int64_t>(r.phase == ScenePhase::event));
     f.set_attribute("/run", "event_time", r.event_time);
     f.set_attribute("/run", "peak_kinetic_energy", r.peak_kinetic_energy);
+  }
+}
+
+void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& run,
+                          const std::vector<std::vector<double>>& samples) {
+  const auto temporary = std::filesystem::path(file.string() + ".part");
+  {
+    Hdf5File f(temporary, Hdf5File::Mode::create);
+    write_cel_checkpoint(f, run);
+    f.create_group("/scene");
     std::vector<double> table;
     const std::size_t cols = samples.empty() ? 0 : samples.front().size();
     for (const auto& row : samples) table.insert(table.end(), row.begin(), row.end());
-    f.write("/run/samples", table, {samples.size(), cols}, "mixed");
-    f.set_attribute("/run", "sample_columns", static_cast<std::int64_t>(cols));
+    if (!samples.empty()) f.write("/scene/series", table, {samples.size(), cols}, "SI");
     f.close();
   }
   std::filesystem::rename(temporary, file);
 }
 
 CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const PlaneStrainGrid& g) {
+  const Hdf5File f(file, Hdf5File::Mode::read);
+  CelCheckpoint c = read_cel_checkpoint(f, g);
+  if (f.exists("/scene/series")) {
+    const auto dims = f.dims("/scene/series");
+    const auto table = f.read<double>("/scene/series");
+    for (std::size_t k = 0; dims.size() == 2 && dims[1] > 0 && k + dims[1] <= table.size(); k += dims[1])
+      c.samples.emplace_back(table.begin() + k, table.begin() + k + dims[1]);
+  }
+  return c;
+}
+
+CelCheckpoint read_cel_checkpoint(const Hdf5File& f, const PlaneStrainGrid& g) {
+  const std::filesystem::path& file = f.path();
   const auto refuse = [&](const std::string& why) {
     throw std::runtime_error("checkpoint " + file.string() + ": " + why);
   };
-  Hdf5File f(file, Hdf5File::Mode::read);
   if (!f.exists("/cells") || f.string_attribute("/", "format") != kCelCheckpointFormat)
     refuse("not a CEL checkpoint");
   if (f.integer_attribute("/", "format_version") != kCelCheckpointVersion)
@@ -143,10 +161,6 @@ CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const Plane
   c.run.phase = f.integer_attribute("/run", "phase") ? ScenePhase::event : ScenePhase::gravity;
   c.run.event_time = f.double_attribute("/run", "event_time");
   c.run.peak_kinetic_energy = f.double_attribute("/run", "peak_kinetic_energy");
-  const auto cols = static_cast<std::size_t>(f.integer_attribute("/run", "sample_columns"));
-  const auto table = f.read<double>("/run/samples");
-  for (std::size_t k = 0; cols > 0 && k + cols <= table.size(); k += cols)
-    c.samples.emplace_back(table.begin() + k, table.begin() + k + cols);
   return c;
 }
 

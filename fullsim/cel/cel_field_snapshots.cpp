@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/hdf5_file.hpp"
+#include "models/os/atomic_file.hpp"
 
 namespace feedflow::cel {
 

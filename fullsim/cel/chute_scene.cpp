@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <stdexcept>
+
+#include "models/units/angle.hpp"
 
 namespace feedflow::cel {
 
@@ -37,7 +38,7 @@ CelScene make_chute_scene(const Chute& chute, const SceneMaterial& material, dou
   std::snprintf(line, sizeof line,
                 "ramp: %.3g deg, no slip, %.4g m long after the gate; bin %.4g m long on the "
                 "ramp (free-slip back wall, bin floor on the ramp), fill %.4g m, %.4g kg/m^3, "
-                "e0 = %.4g", chute.angle * 180.0 / std::numbers::pi, chute.length,
+                "e0 = %.4g", in_degrees(chute.angle), chute.length,
                 chute.bin_length, chute.fill_height, material.bulk_density, material.void_ratio);
   s.plan.push_back(line);
   std::snprintf(line, sizeof line,

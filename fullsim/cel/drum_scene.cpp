@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "models/units/angle.hpp"
+
 namespace feedflow::cel {
 
 DrumSection drum_section(const Drum& drum, double h) {
@@ -99,8 +101,7 @@ CelScene make_drum_scene(const Drum& drum, double wall_friction_angle,
   std::snprintf(line, sizeof line,
                 "shell: circle D = %.4g m (%d segments), Coulomb mu = %.3f (%.3g deg), "
                 "counter-clockwise at %.4g rpm from the event, %s", drum.diameter, segments,
-                shell.friction, wall_friction_angle * 180.0 / std::numbers::pi,
-                drum.speed * 60.0 / (2.0 * std::numbers::pi),
+                shell.friction, in_degrees(wall_friction_angle), in_rpm(drum.speed),
                 in_shell_frame ? "solved in the shell's turning frame (gravity turns, "
                                  "centrifugal and Coriolis forces on the nodes; velocities "
                                  "relative to the shell)"

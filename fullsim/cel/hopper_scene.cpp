@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "models/units/angle.hpp"
+
 namespace feedflow::cel {
 namespace {
 
@@ -105,9 +107,9 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
   std::snprintf(line, sizeof line,
                 "walls: inclined %.3g deg from the vertical from the outlet edge x = %.4g m to "
                 "the bin wall x = %.4g m at y = %.4g m, vertical above%s; Coulomb mu = %.3f "
-                "(%.3g deg)", hopper.semi_angle * 180.0 / M_PI, xc + half_outlet, xc + half_bin,
+                "(%.3g deg)", in_degrees(hopper.semi_angle), xc + half_outlet, xc + half_bin,
                 knee, full ? ", and its mirror image about the centre line" : "", mu,
-                wall_friction_angle * 180.0 / M_PI);
+                in_degrees(wall_friction_angle));
   s.plan.push_back(line);
   std::snprintf(line, sizeof line,
                 "fill: %.4g m above the outlet (%.4g m above the virtual apex), %.4g kg/m^3, "

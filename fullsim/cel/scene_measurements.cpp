@@ -4,64 +4,25 @@
 #include <cmath>
 
 namespace feedflow::cel {
-namespace {
-
-// Least-squares slope of y(x) over the samples [first, last).
-double slope(const std::vector<DischargeSample>& s, std::size_t first, std::size_t last) {
-  if (last <= first + 1) return 0.0;
-  double mx = 0.0, my = 0.0;
-  const double n = static_cast<double>(last - first);
-  for (std::size_t k = first; k < last; ++k) mx += s[k].time, my += s[k].mass;
-  mx /= n, my /= n;
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t k = first; k < last; ++k) {
-    sxy += (s[k].time - mx) * (s[k].mass - my);
-    sxx += (s[k].time - mx) * (s[k].time - mx);
-  }
-  return sxx > 0.0 ? sxy / sxx : 0.0;
-}
-
-}  // namespace
-
-DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass) {
-  const auto& h = ledger.history();
-  DischargeRate r;
-  std::size_t first = 0;
-  while (first < h.size() && h[first].time < start) ++first;
-  std::size_t last = first;
-  while (last < h.size() && initial_mass - h[last].mass > 0.2 * initial_mass) ++last;
-  if (last <= first + 4) return r;
-  r.window_start = h[first].time;
-  r.window_end = h[last - 1].time;
-  r.rate = slope(h, first, last);
-  r.low = r.high = r.rate;
-  const std::size_t q = (last - first) / 4;
-  for (int k = 0; k < 4; ++k) {
-    const double s = slope(h, first + k * q, first + (k + 1) * q);
-    r.low = std::min(r.low, s);
-    r.high = std::max(r.high, s);
-  }
-  const std::size_t tail = h.size() - std::max<std::size_t>((h.size() - first) / 4, 2);
-  r.final_rate = slope(h, std::max(tail, first), h.size());
-  return r;
-}
-
-double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x) {
+SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x) {
   const auto& g = solver.grid();
   const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);
   const int i0 = std::clamp(static_cast<int>(std::lround((centre_x - g.origin.x()) / g.cell_size)), 0, g.nx);
   double heaviest = 0.0;
   for (int i = i0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
   const double light = 0.05 * heaviest;  // nodes of nearly empty cells do not count
-  double centre = 0.0, wall = 0.0;
-  bool found = false;
+  SpeedProfile line;
   for (int i = i0; i <= g.nx; ++i) {
     const std::size_t a = g.node(i, j);
     if (solver.nodes().mass[a] <= light) continue;
-    if (!found) centre = solver.nodes().velocity[a].norm(), found = true;
-    wall = solver.nodes().velocity[a].norm();
+    line.offset.push_back((i - i0) * g.cell_size);
+    line.speed.push_back(solver.nodes().velocity[a].norm());
   }
-  return centre > 0.0 ? wall / centre : 0.0;
+  return line;
+}
+
+double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x) {
+  return feedflow::wall_to_centre_speed_ratio(speed_profile(solver, y, centre_x)).ratio;
 }
 
 FreeSurface free_surface(const CelSolver& solver, double x_min, double x_max) {

@@ -1,29 +1,21 @@
 #pragma once
-// What the scenes measure on the fields (issue 7 "Measurements"): the discharge rate from the
-// outflow ledger, the flow pattern of a hopper from the velocity field, the free surface of a
-// drum bed (volume fraction 0.5) and its slope, and the deposit thickness along a ramp (sum of
-// cell heights x volume fraction, as the seed's FEM).
+// What the CEL scenes read off the fields for the measurements every rung shares
+// (fullsim/common/*_measurement.hpp): the flow-pattern line of a hopper from the node speeds,
+// the free surface of a drum bed (volume fraction 0.5) and its slope, and the deposit
+// thickness along a ramp (sum of cell heights x volume fraction, as the seed's FEM). The
+// discharge is measured on the run's series of the outflow ledger.
 #include <vector>
 
 #include "fullsim/cel/cel_solver.hpp"
+#include "fullsim/common/flow_pattern_measurement.hpp"
 
 namespace feedflow::cel {
 
-struct DischargeRate {
-  double rate = 0.0;          // least-squares slope over the window [kg/s per m depth]
-  double low = 0.0, high = 0.0;  // smallest and largest slope of the window's four quarters
-  double window_start = 0.0, window_end = 0.0;  // [s]
-  double final_rate = 0.0;    // slope over the last quarter of the run [kg/s/m]
-};
-
-// The rate over the steady window: from `start` to the end of the ledger, ended early when the
-// grid holds less than 20 % of `initial_mass` (the hopper is running empty).
-DischargeRate discharge_rate(const DischargeLedger& ledger, double start, double initial_mass);
-
-// Speed of the material beside the inclined wall over the centreline speed, at the height
-// `y` (nodes with mass on that grid row from the node nearest `centre_x`, the centre line,
-// towards +x; the wall-side node is the last one carrying mass). Mass flow when it exceeds 0.1
-// (the wall material moves), funnel flow otherwise.
+// The node speeds along the grid row nearest the height `y`, from the node nearest `centre_x`
+// (the centre line) towards +x, of the nodes carrying material (more than 5 % of the row's
+// heaviest node): the flow-pattern line of fullsim/common/flow_pattern_measurement.hpp.
+SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x = 0.0);
+// Its wall-to-centre speed ratio (mass flow above 0.1).
 double wall_to_centre_speed_ratio(const CelSolver& solver, double y, double centre_x = 0.0);
 
 struct FreeSurface {

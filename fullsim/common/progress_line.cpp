@@ -30,6 +30,24 @@ ProgressLine ProgressLine::for_terminal(std::string label, double total, std::st
 
 ProgressLine::~ProgressLine() { finish(); }
 
+TerminalProgress TerminalProgress::for_terminal(bool quiet) {
+  return TerminalProgress(std::cerr, !quiet && isatty(STDERR_FILENO) == 1);
+}
+
+void TerminalProgress::begin(const std::string& label, double total, const std::string& unit) {
+  if (line_) line_->finish();
+  line_.emplace(label, total, unit, out_, enabled_);
+}
+
+void TerminalProgress::update(double done) {
+  if (line_) line_->update(done);
+}
+
+void TerminalProgress::finish() {
+  if (line_) line_->finish();
+  line_.reset();
+}
+
 double ProgressLine::eta_seconds(double elapsed, double fraction) {
   if (!(fraction > 0.0) || !std::isfinite(elapsed)) return -1.0;
   if (fraction >= 1.0) return 0.0;

@@ -3,8 +3,11 @@
 // in place on a terminal. Silent when the stream is not a terminal or when asked to be quiet.
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
+
+#include "fullsim/common/progress_sink.hpp"
 
 namespace feedflow {
 
@@ -46,6 +49,22 @@ class ProgressLine {
   Clock::time_point start_;
   Clock::time_point last_draw_;
   std::size_t last_width_ = 0;
+};
+
+// The progress sink of a terminal: one ProgressLine per stretch of work, shown on `out` when
+// enabled (for_terminal(): stderr is a terminal and the run is not quiet).
+class TerminalProgress final : public ProgressSink {
+ public:
+  TerminalProgress(std::ostream& out, bool enabled) : out_(out), enabled_(enabled) {}
+  static TerminalProgress for_terminal(bool quiet);
+  void begin(const std::string& label, double total, const std::string& unit) override;
+  void update(double done) override;
+  void finish() override;
+
+ private:
+  std::ostream& out_;
+  bool enabled_;
+  std::optional<ProgressLine> line_;
 };
 
 // "1 h 02 min", "3 min 05 s", "12 s"

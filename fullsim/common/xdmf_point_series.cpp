@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "fullsim/common/atomic_file.hpp"
+#include "models/os/atomic_file.hpp"
 
 namespace feedflow {
 namespace {

@@ -285,13 +285,26 @@ void write_dem_checkpoint(const std::filesystem::path& path, const DemCheckpoint
 }
 
 DemCheckpoint read_dem_checkpoint(const std::filesystem::path& path) {
+  std::optional<Hdf5File> f;
   try {
-    const Hdf5File f(path, Hdf5File::Mode::read);
-    return read_contents(f);
+    f.emplace(path, Hdf5File::Mode::read);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("DEM checkpoint " + path.string() + " refused: " + e.what());
+  }
+  return read_dem_checkpoint(*f);
+}
+
+void write_dem_checkpoint(Hdf5File& file, const DemCheckpoint& checkpoint) {
+  write_contents(file, checkpoint);
+}
+
+DemCheckpoint read_dem_checkpoint(const Hdf5File& file) {
+  try {
+    return read_contents(file);
   } catch (const std::runtime_error& e) {
     const std::string what = e.what();
     if (what.rfind("DEM checkpoint", 0) == 0) throw;
-    throw std::runtime_error("DEM checkpoint " + path.string() + " refused: " + what);
+    throw std::runtime_error("DEM checkpoint " + file.path().string() + " refused: " + what);
   }
 }
 

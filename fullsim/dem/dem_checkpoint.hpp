@@ -42,7 +42,12 @@ struct DemCheckpoint {
   double guard_gravity_work = 0.0;    // [J]
 };
 
+class Hdf5File;
+
 void write_dem_checkpoint(const std::filesystem::path& path, const DemCheckpoint& checkpoint);
 DemCheckpoint read_dem_checkpoint(const std::filesystem::path& path);
+// The same into and from an open file (a scene run's checkpoint, with its /scene group beside).
+void write_dem_checkpoint(Hdf5File& file, const DemCheckpoint& checkpoint);
+DemCheckpoint read_dem_checkpoint(const Hdf5File& file);
 
 }  // namespace feedflow

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -13,8 +12,8 @@
 #include <omp.h>
 #endif
 
-#include "fullsim/common/progress_line.hpp"
 #include "fullsim/dem/morton_order.hpp"
+#include "fullsim/dem/particle_snapshots.hpp"
 #include "models/core/errors.hpp"
 
 // force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
@@ -186,17 +185,19 @@ void DemEngine::prepare(std::ostream& out) {
   // Kernels whose parameters make them vanish are not run at all.
   effective_law_ = settings_.law;
   skipped_.clear();
-  if (effective_law_.rolling != RollingLaw::none && dem.particle_particle.rolling_friction == 0.0 &&
+  if (!effective_law_.rolling.is<NoRolling>() && dem.particle_particle.rolling_friction == 0.0 &&
       dem.particle_wall.rolling_friction == 0.0) {
-    effective_law_.rolling = RollingLaw::none;
+    effective_law_.rolling = contact_part<NoRolling>;
     skipped_.push_back("rolling kernel skipped: mu_r = 0 in the P-P and P-W sets");
   }
-  if (effective_law_.tangential != TangentialLaw::none && dem.particle_particle.friction == 0.0 &&
-      dem.particle_wall.friction == 0.0 && effective_law_.rolling != RollingLaw::epsd2) {
-    effective_law_.tangential = TangentialLaw::none;
+  const bool rolling_reads_kt = effective_law_.rolling.visit(
+      [](auto r) { return decltype(r)::type::kReadsTangentialStiffness; });
+  if (!effective_law_.tangential.is<NoTangential>() && dem.particle_particle.friction == 0.0 &&
+      dem.particle_wall.friction == 0.0 && !rolling_reads_kt) {
+    effective_law_.tangential = contact_part<NoTangential>;
     skipped_.push_back("tangential kernel skipped: mu = 0 in the P-P and P-W sets");
   }
-  if (effective_law_.cohesion == CohesionLaw::none)
+  if (effective_law_.cohesion.is<NoCohesion>())
     skipped_.push_back("cohesion: none (normal force clipped at zero, no contact pulls)");
   kernel_ = make_force_kernel(effective_law_, dem);
 
@@ -339,7 +340,6 @@ void DemEngine::check_current_springs(const DeepestOverlap& pairs, const Deepest
                              "step %.4g s (%s); the run goes on, watched by the blow-up guard",
                              step_, pairs.ratio, walls.ratio, time_step_.value, live.value,
                              now.description().c_str());
-    std::cerr << spring_warning_ << '\n';
   }
 }
 
@@ -423,26 +423,82 @@ void DemEngine::finish_kick() {
 }
 
 void DemEngine::run_steps(long steps) {
-  if (!prepared_) prepare(std::cout);
+  if (!prepared_) {
+    std::ostringstream silent;
+    prepare(silent);
+  }
   const auto start = std::chrono::steady_clock::now();
-  ProgressLine progress = ProgressLine::for_terminal(
-      "DEM", static_cast<double>(steps) * time_step_.value, "s", settings_.quiet);
-  const double t0 = time_;
   // Between two steps of this call the second half kick waits for the next step's first pass;
   // the last step finishes its own, so the state is whole between calls.
-  for (long s = 0; s < steps; ++s) {
-    one_step(s + 1 == steps);
-    auto scope = report_.time("output");
-    progress.update(time_ - t0);
-  }
-  progress.finish();
+  for (long s = 0; s < steps; ++s) one_step(s + 1 == steps);
   run_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void DemEngine::run_until(double time) {
-  if (!prepared_) prepare(std::cout);
-  const long steps = static_cast<long>(std::ceil((time - time_) / time_step_.value - 1e-9));
+long DemEngine::steps_to(double t) const {
+  const double x = (t - time_) / time_step_.value;
+  if (!(x > 0.0)) return 0;
+  if (!std::isfinite(x)) return kUnbounded;
+  // A time within a quarter step of a step is that step: the summed time drifts from the
+  // step grid by round-off only.
+  const double nearest = std::round(x);
+  return static_cast<long>(std::abs(x - nearest) < 0.25 ? nearest : std::ceil(x));
+}
+
+long DemEngine::advance_to(double t, long max_steps) {
+  if (!prepared_) {
+    std::ostringstream silent;
+    prepare(silent);
+  }
+  const long steps = std::min(steps_to(t), max_steps);
   if (steps > 0) run_steps(steps);
+  return std::max(0L, steps);
+}
+
+double DemEngine::whole_steps(double duration, StepRounding rounding) const {
+  const double dt = time_step_.value;
+  const double steps = rounding == StepRounding::up ? std::ceil(duration / dt - 1e-9)
+                                                    : std::max(1.0, std::round(duration / dt));
+  return steps * dt;
+}
+
+namespace {
+
+// The particle snapshots of an engine (DemEngine::snapshot_writer).
+class ParticleSnapshotWriter final : public SnapshotWriter {
+ public:
+  ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file)
+      : engine_(engine), snapshots_(std::move(file), 1) {}
+  void write() override {
+    if (engine_.step() != last_step_) snapshots_.write(engine_.particles(), engine_.time(), engine_.step());
+    last_step_ = engine_.step();
+  }
+  std::size_t count() const override { return snapshots_.count(); }
+  std::vector<std::filesystem::path> files() const override {
+    if (count() == 0) return {};
+    return {snapshots_.hdf5_path(), snapshots_.xdmf_path()};
+  }
+
+ private:
+  const DemEngine& engine_;
+  ParticleSnapshots snapshots_;
+  long last_step_ = -1;
+};
+
+}  // namespace
+
+std::unique_ptr<SnapshotWriter> DemEngine::snapshot_writer(const std::filesystem::path& folder,
+                                                           bool continuing) const {
+  const std::string name =
+      continuing ? "particles_from_step_" + std::to_string(step_) + ".h5" : "particles.h5";
+  return std::make_unique<ParticleSnapshotWriter>(*this, folder / name);
+}
+
+void DemEngine::write_checkpoint(Hdf5File& file) const { write_dem_checkpoint(file, checkpoint()); }
+
+void DemEngine::restore(const Hdf5File& file) {
+  std::vector<MeshWall> meshes = std::move(meshes_);
+  *this = DemEngine(settings_, read_dem_checkpoint(file));
+  meshes_ = std::move(meshes);
 }
 
 double DemEngine::max_speed() const {
@@ -451,7 +507,9 @@ double DemEngine::max_speed() const {
   return std::sqrt(v2);
 }
 
-std::string DemEngine::performance_report() const {
+std::string DemEngine::performance_report() const { return performance().render(); }
+
+RunReport DemEngine::performance() const {
   RunReport r = report_;
   r.set_wall_seconds(run_seconds_);
   const double rate = run_seconds_ > 0.0 ? particle_steps_ / run_seconds_ : 0.0;
@@ -464,7 +522,7 @@ std::string DemEngine::performance_report() const {
                                                            : 0.0,
                                          neighbours_.rebuild_count()));
   r.add_figure("threads", format("%d", thread_count()));
-  return r.render();
+  return r;
 }
 
 }  // namespace feedflow

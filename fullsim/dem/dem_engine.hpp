@@ -3,14 +3,15 @@
 // (LIGGGHTS nve/sphere order, models.md 4.5), neighbour lists rebuilt on a skin criterion and
 // re-sorted along a Morton curve, the composed contact law for particle-particle and
 // particle-wall contacts (each with its Table 2 parameter set), moving and removable walls,
-// periodic axes, an outlet sink, the blow-up guard, the plan printed before a run and the
-// performance block after it.
+// periodic axes, an outlet sink, the blow-up guard, the plan written before a run and the
+// performance block after it. It implements the stepper contract of the scene run loop
+// (fullsim/common/stepper.hpp) with a fixed time step; it writes only to the log it is given.
 //
 //   DemEngine engine(settings, box, particles);
 //   engine.add_wall(Wall::plane("floor", {0, 0, 0}, {0, 0, 1}));
-//   engine.prepare(std::cout);       // plan, time step and its justification
-//   engine.run_steps(10000);
-//   std::cout << engine.performance_report();
+//   engine.prepare(log);             // plan, time step and its justification
+//   engine.run_steps(10000);         // or advance_to(t)
+//   log << engine.performance_report();
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "fullsim/common/run_report.hpp"
+#include "fullsim/common/stepper.hpp"
 #include "fullsim/dem/blow_up_guard.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 #include "fullsim/dem/force_kernel.hpp"
@@ -45,12 +47,11 @@ struct DemSettings {
   double requested_time_step = 0.0;          // [s]; 0: the stable step
   bool force_time_step = false;              // accept a step above the stable one
   BlowUpLimits guard;
-  bool quiet = false;                        // no progress line
   std::size_t parallel_from = 4000;          // fewer particles run on one thread (the
                                              // thread start-up would cost more than it saves)
 };
 
-class DemEngine {
+class DemEngine final : public Stepper {
  public:
   DemEngine(DemSettings settings, SimulationBox box, ParticleStore particles);
   // Restores a run from a checkpoint (read_dem_checkpoint(), or one taken by checkpoint()):
@@ -59,7 +60,7 @@ class DemEngine {
   // gravity (and throws std::runtime_error naming what differs) instead of rebuilding, so the
   // run continues bit-identically.
   DemEngine(DemSettings settings, DemCheckpoint checkpoint);
-  ~DemEngine();
+  ~DemEngine() override;
   DemEngine(DemEngine&&) noexcept;
   DemEngine& operator=(DemEngine&&) noexcept;
 
@@ -81,22 +82,35 @@ class DemEngine {
   void set_wall_removal_time(const std::string& name, double t);
 
   // Chooses the kernels and the time step, builds the neighbour list and the first forces,
-  // and writes the plan to `out`. Called by the first run_steps() if not called before.
-  void prepare(std::ostream& out);
+  // and writes the plan to `out`. The first run_steps() prepares silently if not done before.
+  void prepare(std::ostream& out) override;
   // Advances `steps` steps of velocity Verlet (throws NumericalFailure on a blow-up).
   void run_steps(long steps);
-  // Advances until `time` (at least) is reached.
-  void run_until(double time);
+  // The stepper contract (fullsim/common/stepper.hpp), on the fixed time step.
+  long advance_to(double t, long max_steps = kUnbounded) override;
+  bool reached(double t) const override { return steps_to(t) == 0; }
+  double whole_steps(double duration, StepRounding rounding) const override;
+  long steps() const override { return step_; }
 
   // The state as it stands (after prepare()), for write_dem_checkpoint().
   DemCheckpoint checkpoint() const;
-  // Writes checkpoint() to `path` (whole or nothing).
+  // Writes checkpoint() to `path` (whole or nothing), or into an open file.
   void write_checkpoint(const std::filesystem::path& path) const;
+  void write_checkpoint(Hdf5File& file) const override;
+  // The state of the checkpoint in `file`, in place of this engine's particles, analytic walls,
+  // sink, neighbour list, step and time (the mesh walls added so far stay); prepare() then
+  // checks the settings against it, as for the constructor from a checkpoint.
+  void restore(const Hdf5File& file) override;
+  // Particle snapshots (particle_snapshots.hpp): particles.h5, or for a continued run
+  // particles_from_step_<step>.h5 beside the first part's file.
+  std::unique_ptr<SnapshotWriter> snapshot_writer(const std::filesystem::path& folder,
+                                                  bool continuing) const override;
+  RunReport performance() const override;
 
   std::string plan() const { return plan_; }
   std::string performance_report() const;
 
-  double time() const { return time_; }
+  double time() const override { return time_; }
   long step() const { return step_; }
   double time_step() const { return time_step_.value; }
   const TimeStepChoice& time_step_choice() const { return time_step_; }
@@ -111,13 +125,14 @@ class DemEngine {
   const RunReport& report() const { return report_; }
   double kinetic_energy() const { return particles_.kinetic_energy(); }
   double max_speed() const;
-  // The warning given (once, also on stderr) when a contact grew stiffer than the time step
-  // allows with its safety factor; empty if none.
+  // The warning raised (once) when a contact grew stiffer than the time step allows with its
+  // safety factor; empty if none. The engine prints nothing: the scene reports it.
   const std::string& spring_warning() const { return spring_warning_; }
   // The particle-steps run so far.
   double particle_steps() const { return particle_steps_; }
 
  private:
+  long steps_to(double t) const;  // whole steps until t is reached (stepper.hpp)
   void rebuild_neighbours();
   void reset_forces();    // to the weight, no torque
   void compute_forces();  // adds the contact forces

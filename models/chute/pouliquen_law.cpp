@@ -1,17 +1,15 @@
 #include "models/chute/pouliquen_law.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <memory>
 #include <numbers>
 #include <stdexcept>
 
 #include "models/core/errors.hpp"
+#include "models/numerics/brent_root.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
@@ -25,7 +23,7 @@ void check_angle(double angle) {
 
 std::string degrees(double radians) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f deg", radians * 180.0 / std::numbers::pi);
+  std::snprintf(buf, sizeof buf, "%.1f deg", in_degrees(radians));
   return buf;
 }
 
@@ -47,6 +45,21 @@ void check(const PouliquenLaw& law) {
   if (!(law.length > 0.0)) throw std::invalid_argument("Pouliquen law needs L > 0");
   if (!(law.beta > 0.0) || !(law.gamma >= 0.0))
     throw std::invalid_argument("Pouliquen flow rule needs beta > 0 and Gamma >= 0");
+}
+
+const char* to_string(DepositOutcome o) {
+  switch (o) {
+    case DepositOutcome::Deposit: return "a layer stays behind";
+    case DepositOutcome::NoDepositAboveTheta2: return "no deposit (above theta2)";
+    case DepositOutcome::NeverFlowsBelowTheta1: return "never flows (below theta1)";
+  }
+  return "a layer stays behind";
+}
+
+std::optional<DepositOutcome> deposit_outcome_from_string(std::string_view text) {
+  for (auto o : {DepositOutcome::Deposit, DepositOutcome::NoDepositAboveTheta2, DepositOutcome::NeverFlowsBelowTheta1})
+    if (text == to_string(o)) return o;
+  return std::nullopt;
 }
 
 StoppingThickness stopping_thickness(const PouliquenLaw& law, double angle) {
@@ -92,34 +105,15 @@ double thickness_for_flow_rate(const PouliquenLaw& law, double q, double angle) 
   const double closed = std::pow(q * stop.thickness / (law.beta * std::sqrt(kGravity)), 0.4);
   if (law.gamma == 0.0) return closed;
   // q(h) = sqrt(g) h^(3/2) (beta h/h_stop - Gamma) rises monotonically from h0 = Gamma h_stop/beta.
-  struct Args {
-    const PouliquenLaw* law;
-    double angle, q;
-  } args{&law, angle, q};
-  gsl_function f;
-  f.function = [](double h, void* p) {
-    const auto* a = static_cast<const Args*>(p);
-    return h * flow_rule_velocity(*a->law, h, a->angle) - a->q;
-  };
-  f.params = &args;
+  const auto excess_flow = [&](double h) { return h * flow_rule_velocity(law, h, angle) - q; };
   double lo = law.gamma * stop.thickness / law.beta, hi = std::max(2.0 * lo, closed);
-  while (f.function(hi, &args) < 0.0) hi *= 2.0;
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> s(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
-  gsl_root_fsolver_set(s.get(), &f, lo, hi);
-  int status = GSL_CONTINUE;
-  for (int it = 0; it < 200 && status == GSL_CONTINUE; ++it) {
-    gsl_root_fsolver_iterate(s.get());
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s.get()),
-                                    gsl_root_fsolver_x_upper(s.get()), 0.0, 1e-12);
-  }
-  gsl_set_error_handler(old);
-  if (status != GSL_SUCCESS)
+  while (excess_flow(hi) < 0.0) hi *= 2.0;
+  const BrentSearch root = brent_search(excess_flow, lo, hi, {0.0, 1e-12, 200});
+  if (!root.converged())
     throw NumericalFailure("chute sizing: Brent root of q = h u(h) did not converge in [" +
                            std::to_string(lo) + ", " + std::to_string(hi) +
                            "] m; check beta and Gamma");
-  return gsl_root_fsolver_root(s.get());
+  return root.root;
 }
 
 double basal_friction_at_rest(const PouliquenLaw& law, double h) {

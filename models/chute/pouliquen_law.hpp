@@ -3,7 +3,10 @@
 // (reduced_models.md section 3 items 1-2): h_stop(theta), the flow rule Fr = beta h/h_stop - Gamma
 // with Fr = u/sqrt(g h), chute sizing h(q), and the depth-averaged basal friction mu(h, Fr) of
 // Pouliquen & Forterre (2002) that the L1 chute model uses. Thicknesses are normal to the plane.
+#include <optional>
 #include <string>
+#include <string_view>
+
 #include "models/core/gravity.hpp"
 
 namespace feedflow {
@@ -30,6 +33,10 @@ enum class DepositOutcome {
   NoDepositAboveTheta2,  // theta >= theta2: every layer flows off, nothing stops
   NeverFlowsBelowTheta1  // theta <= theta1: every layer is static, h_stop is infinite
 };
+// The label of the `deposit` estimate: "a layer stays behind", "no deposit (above theta2)",
+// "never flows (below theta1)"; and back (empty for any other text).
+const char* to_string(DepositOutcome o);
+std::optional<DepositOutcome> deposit_outcome_from_string(std::string_view text);
 
 struct StoppingThickness {
   DepositOutcome outcome = DepositOutcome::Deposit;

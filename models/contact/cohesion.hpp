@@ -14,6 +14,7 @@ namespace feedflow {
 
 struct NoCohesion {
   static constexpr std::string_view kKeyword = "none";
+  static constexpr std::string_view kSummary = "normal force clipped at zero (limitForce)";
   static constexpr std::size_t kHistorySize = 0;
   static constexpr bool kNeedsCohesionBranch = false;
   static NoCohesion from_material(const DemContactParameters&) { return {}; }
@@ -22,6 +23,8 @@ struct NoCohesion {
 
 struct KncCohesion {
   static constexpr std::string_view kKeyword = "k_nc";
+  static constexpr std::string_view kSummary =
+      "the hysteretic law's F = -K_nc A2 delta branch acts (no clipping)";
   static constexpr std::size_t kHistorySize = 0;
   static constexpr bool kNeedsCohesionBranch = true;
   static KncCohesion from_material(const DemContactParameters&) { return {}; }

@@ -19,6 +19,7 @@ namespace feedflow {
 class HertzNormal {
  public:
   static constexpr std::string_view kKeyword = "hertz";
+  static constexpr std::string_view kSummary = "Hertz spring, dashpot from the restitution";
   static constexpr std::size_t kHistorySize = 0;
   static constexpr bool kHasCohesionBranch = false;
   static constexpr bool kRollingOnTotalForce = false;  // LIGGGHTS `cdt`: F_ref = k_n delta

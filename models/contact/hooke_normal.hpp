@@ -18,6 +18,8 @@ namespace feedflow {
 class HookeNormal {
  public:
   static constexpr std::string_view kKeyword = "hooke";
+  static constexpr std::string_view kSummary =
+      "linear spring-dashpot, dashpot from the restitution";
   static constexpr std::size_t kHistorySize = 0;
   static constexpr bool kHasCohesionBranch = false;
   static constexpr bool kRollingOnTotalForce = false;

@@ -17,6 +17,8 @@ namespace feedflow {
 class HystereticNonlinear1 {
  public:
   static constexpr std::string_view kKeyword = "hysteretic_nonlinear1";
+  static constexpr std::string_view kSummary =
+      "Chen hysteretic law, linear unloading, K_nc cohesion branch";
   static constexpr std::size_t kHistorySize = hysteretic_slot::count;
   static constexpr bool kHasCohesionBranch = true;
   static constexpr bool kRollingOnTotalForce = true;

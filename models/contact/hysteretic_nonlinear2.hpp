@@ -20,6 +20,8 @@ namespace feedflow {
 class HystereticNonlinear2 {
  public:
   static constexpr std::string_view kKeyword = "hysteretic_nonlinear2";
+  static constexpr std::string_view kSummary =
+      "Chen 2022 hysteretic law, exponential unloading (seed Eq. 7)";
   static constexpr std::size_t kHistorySize = hysteretic_slot::count;
   static constexpr bool kHasCohesionBranch = true;
   static constexpr bool kRollingOnTotalForce = true;  // INL `cdtnonlinear2`: F_ref = F_n

@@ -29,7 +29,9 @@ struct RollingLoad {
 class NoRolling {
  public:
   static constexpr std::string_view kKeyword = "none";
+  static constexpr std::string_view kSummary = "no rolling resistance";
   static constexpr std::size_t kHistorySize = 0;
+  static constexpr bool kReadsTangentialStiffness = false;
   static NoRolling from_material(const DemContactParameters&) { return {}; }
   Vec3 torque(const ContactInput&, const RollingLoad&, double*) const { return Vec3::Zero(); }
   double spring_stiffness(const ContactInput&, const RollingLoad&) const { return 0.0; }
@@ -39,7 +41,11 @@ template <bool kClamped>
 class ConstantTorqueRolling {
  public:
   static constexpr std::string_view kKeyword = kClamped ? "cdt_clamped" : "cdt";
+  static constexpr std::string_view kSummary =
+      kClamped ? "constant torque capped so one step cannot reverse the rolling"
+               : "constant directional torque (Zhou et al. 1999)";
   static constexpr std::size_t kHistorySize = 0;
+  static constexpr bool kReadsTangentialStiffness = false;
   ConstantTorqueRolling() = default;
   explicit ConstantTorqueRolling(double rolling_friction) : mu_r_(rolling_friction) {}
   static ConstantTorqueRolling from_material(const DemContactParameters& p) {
@@ -70,7 +76,11 @@ using RollingCdtClamped = ConstantTorqueRolling<true>;
 class RollingEpsd2 {
  public:
   static constexpr std::string_view kKeyword = "epsd2";
+  static constexpr std::string_view kSummary =
+      "elastic-plastic spring torque, k_r = k_t R*^2 (Wensrich & Katterfeld 2012)";
   static constexpr std::size_t kHistorySize = 3;
+  // k_r comes from the tangential part's k_t, so the tangential part stays even at mu = 0.
+  static constexpr bool kReadsTangentialStiffness = true;
   RollingEpsd2() = default;
   explicit RollingEpsd2(double rolling_friction) : mu_r_(rolling_friction) {}
   static RollingEpsd2 from_material(const DemContactParameters& p) {

@@ -27,6 +27,7 @@ struct TangentialResponse {
 class NoTangential {
  public:
   static constexpr std::string_view kKeyword = "none";
+  static constexpr std::string_view kSummary = "no tangential force";
   static constexpr std::size_t kHistorySize = 0;
   static NoTangential from_material(const DemContactParameters&) { return {}; }
   TangentialResponse respond(const ContactInput&, double, const NormalResponse& n,
@@ -39,6 +40,8 @@ class NoTangential {
 // k_t and gamma_t as handed on by the normal part.
 struct HandedOnStiffness {
   static constexpr std::string_view kKeyword = "history";
+  static constexpr std::string_view kSummary =
+      "history spring, k_t handed on by the normal law (k1), Coulomb cap";
   static HandedOnStiffness from_material(const DemContactParameters&) { return {}; }
   void operator()(const ContactInput&, const NormalResponse& n, double& kt, double& gt) const {
     kt = n.tangential_stiffness;
@@ -49,6 +52,8 @@ struct HandedOnStiffness {
 // Mindlin no-slip: k_t = 8 G* sqrt(R* delta), gamma_t = c sqrt(k_t m*) with the Hertz c.
 struct MindlinStiffness {
   static constexpr std::string_view kKeyword = "mindlin";
+  static constexpr std::string_view kSummary =
+      "history spring, Mindlin no-slip k_t = 8 G* sqrt(R* delta), Coulomb cap";
   double shear_modulus = 0.0;            // G* [Pa]
   double damping_coefficient = 0.0;      // c [-]
   static MindlinStiffness from_material(const DemContactParameters& p,
@@ -66,6 +71,7 @@ template <class Stiffness>
 class TangentialHistory {
  public:
   static constexpr std::string_view kKeyword = Stiffness::kKeyword;
+  static constexpr std::string_view kSummary = Stiffness::kSummary;
   static constexpr std::size_t kHistorySize = 3;
 
   TangentialHistory() = default;

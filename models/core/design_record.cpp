@@ -30,6 +30,12 @@ const char* to_string(VerdictStatus status) {
   return "unknown";
 }
 
+const Estimate* find_estimate(const Estimates& estimates, std::string_view key) {
+  for (const auto& [name, e] : estimates)
+    if (name == key) return &e;
+  return nullptr;
+}
+
 VerdictStatus verdict_status_from_string(const std::string& text) {
   if (text == "pass") return VerdictStatus::pass;
   if (text == "marginal") return VerdictStatus::marginal;

@@ -2,7 +2,9 @@
 // The record of one design check or simulation: what was asked, with which inputs, what came
 // out and the verdict. Every computing command produces one; reports/ writes it as JSON, text
 // and (later) PDF.
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -29,9 +31,32 @@ enum class VerdictStatus { pass, marginal, fail, unknown };
 const char* to_string(VerdictStatus status);
 VerdictStatus verdict_status_from_string(const std::string& text);  // throws std::invalid_argument
 
+// A design record's results: quantity key -> estimate, in order. The same list comes from every
+// rung (the reduced models, a DEM or CEL run), and a judge reads it.
+using Estimates = std::vector<std::pair<std::string, Estimate>>;
+
+// The estimate of `key`, or null when the list has none.
+const Estimate* find_estimate(const Estimates& estimates, std::string_view key);
+
+// One reason of a verdict with the numbers it was judged on: the quantity (a key of the
+// record's results), its value and band, and the limit it was held against, all in `unit` (the
+// estimate's unit). For a requirement from above (an allowed deposit) `limit` is the largest
+// value allowed; from below (a throughput) the least value required. A note does not judge.
+struct Finding {
+  std::optional<VerdictStatus> status = {};  // pass, marginal or fail; empty for a note
+  std::string quantity = {};                 // "critical_outlet_width"; empty when none applies
+  std::string text = {};                     // the reason in words, as in Verdict::reasons
+  std::optional<double> value = {};
+  std::optional<double> low = {};
+  std::optional<double> high = {};
+  std::optional<double> limit = {};
+  std::string unit = {};                     // of value, low, high and limit
+};
+
 struct Verdict {
   VerdictStatus status = VerdictStatus::unknown;
-  std::vector<std::string> reasons;
+  std::vector<std::string> reasons;   // every reason in words, "marginal: ..." or a note
+  std::vector<Finding> findings = {};  // the reasons a judge gave, with their keys and numbers
 };
 
 struct DesignRecord {
@@ -41,7 +66,7 @@ struct DesignRecord {
   std::string case_file;
   std::string description;
   std::vector<InputValue> inputs;
-  std::vector<std::pair<std::string, Estimate>> results;  // quantity name -> estimate, in order
+  Estimates results;                  // quantity name -> estimate, in order
   Verdict verdict;
   std::vector<Chart> charts;          // curves for the report
   std::vector<std::string> assumptions;  // what the models assume, and which way each errs

@@ -1,15 +1,12 @@
 #include "models/drum/drum_regime.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <cmath>
-#include <memory>
 #include <numbers>
 #include <stdexcept>
 
 #include "models/chute/pouliquen_law.hpp"
 #include "models/core/errors.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {
@@ -34,26 +31,14 @@ double drum_critical_speed(double diameter) {
 FillSegment fill_segment(double diameter, double f) {
   check_drum(diameter, 0.0);
   if (!(f > 0.0 && f < 1.0)) throw std::invalid_argument("drum fill fraction must lie in (0, 1)");
-  gsl_function fn;
-  fn.function = [](double eps, void* p) {
-    return (2.0 * eps - std::sin(2.0 * eps)) / (2.0 * std::numbers::pi) - *static_cast<double*>(p);
+  const auto fill_mismatch = [f](double eps) {
+    return (2.0 * eps - std::sin(2.0 * eps)) / (2.0 * std::numbers::pi) - f;
   };
-  fn.params = &f;
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> s(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
-  gsl_root_fsolver_set(s.get(), &fn, 0.0, std::numbers::pi);
-  int status = GSL_CONTINUE;
-  for (int it = 0; it < 200 && status == GSL_CONTINUE; ++it) {
-    gsl_root_fsolver_iterate(s.get());
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s.get()),
-                                    gsl_root_fsolver_x_upper(s.get()), 1e-14, 0.0);
-  }
-  gsl_set_error_handler(old);
-  if (status != GSL_SUCCESS)
+  const BrentSearch root = brent_search(fill_mismatch, 0.0, std::numbers::pi, {1e-14, 0.0, 200});
+  if (!root.converged())
     throw NumericalFailure("drum fill segment: Brent root for the chord half-angle did not "
                            "converge at f = " + std::to_string(f));
-  const double eps = gsl_root_fsolver_root(s.get());
+  const double eps = root.root;
   const double R = diameter / 2.0, s3 = std::pow(std::sin(eps), 3);
   return {eps, R * std::sin(eps), 4.0 * R * s3 / (3.0 * (2.0 * eps - std::sin(2.0 * eps)))};
 }
@@ -67,6 +52,13 @@ const char* to_string(DrumRegime regime) {
     case DrumRegime::Centrifuging: return "centrifuging";
   }
   return "?";
+}
+
+std::array<RegimeBoundary, 4> regime_boundaries(const DrumRegimeThresholds& t) {
+  return {{{"slumping | rolling", t.slumping_to_rolling},
+           {"rolling | cascading", t.rolling_to_cascading},
+           {"cascading | cataracting", t.cascading_to_cataracting},
+           {"centrifuging (outer layer)", t.centrifuging}}};
 }
 
 DrumRegimeAssessment assess_drum_regime(const Drum& drum, const DrumRegimeThresholds& t,

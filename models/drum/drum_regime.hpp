@@ -2,6 +2,7 @@
 // Rotating drum: Froude number, critical speed, the segment geometry of the fill, the bed
 // behaviour (regime) from material-calibrated Froude thresholds, the full-bed centrifuging
 // criterion and the no-slip wall criterion (reduced_models.md section 4).
+#include <array>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,14 @@ struct DrumRegimeThresholds {
   double cascading_to_cataracting = 0.5;    // above 0.203
   double centrifuging = 1.0;                // outer layer at the wall: Fr >= 1
 };
+
+// The boundaries between regimes in Fr, slowest first: "slumping | rolling", ...,
+// "centrifuging (outer layer)".
+struct RegimeBoundary {
+  const char* name;
+  double froude;
+};
+std::array<RegimeBoundary, 4> regime_boundaries(const DrumRegimeThresholds& t);
 
 struct DrumRegimeAssessment {
   double froude = 0.0;

@@ -1,15 +1,12 @@
 #include "models/drum/rolling_layer.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "models/core/errors.hpp"
 #include "models/drum/drum_regime.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {
@@ -44,28 +41,16 @@ RollingLayerState rolling_angle_of_repose(const Drum& drum, const RollingLayerMo
             model.layer_fraction * segment.half_chord, 0.0};
   p.wall_term = model.end_wall_friction * p.thickness / drum.length;
 
-  gsl_function fn;
-  fn.function = [](double beta, void* q) { return static_cast<const Problem*>(q)->residual(beta); };
-  fn.params = &p;
   const double lo = std::atan(model.rheology.mu_s);
   const double hi = std::atan(model.rheology.mu_2 + p.wall_term);
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> s(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_error_handler_t* old = gsl_set_error_handler_off();
-  int status = gsl_root_fsolver_set(s.get(), &fn, lo, hi);
-  if (status == GSL_SUCCESS) status = GSL_CONTINUE;
-  for (int it = 0; it < 200 && status == GSL_CONTINUE; ++it) {
-    gsl_root_fsolver_iterate(s.get());
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s.get()),
-                                    gsl_root_fsolver_x_upper(s.get()), 1e-13, 0.0);
-  }
-  gsl_set_error_handler(old);
-  if (status != GSL_SUCCESS)
+  const BrentSearch root =
+      brent_search([&p](double beta) { return p.residual(beta); }, lo, hi, {1e-13, 0.0, 200});
+  if (!root.converged())
     throw NumericalFailure("rolling layer: Brent root for the angle of repose failed between " +
                            std::to_string(lo) + " and " + std::to_string(hi) +
-                           " rad (GSL status " + std::to_string(status) +
+                           " rad (GSL status " + std::to_string(root.status) +
                            "); check mu_s < mu_2 and the drum speed");
-  const double beta = gsl_root_fsolver_root(s.get());
+  const double beta = root.root;
   return {beta, p.inertial_number(beta), p.thickness, p.flux};
 }
 

@@ -1,18 +1,14 @@
 #include "models/equipment/chute.hpp"
 
-#include <numbers>
-
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
-namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
-}
 
 std::span<const FieldSpec<Chute>> chute_fields() {
   static const FieldSpec<Chute> fields[] = {
       number_field<Chute>("angle", &Chute::angle, dim::angle, "deg",
-                          Range::open(0.0, 90.0 * kDeg), "ramp inclination from the horizontal"),
+                          Range::open(0.0, 90.0 * kDegree), "ramp inclination from the horizontal"),
       number_field<Chute>("width", &Chute::width, dim::length, "mm", Range{0.0, 10.0, false, true},
                           "ramp width"),
       number_field<Chute>("length", &Chute::length, dim::length, "m", Range::closed(0.1, 10.0),

@@ -1,12 +1,12 @@
 #include "models/equipment/design_targets.hpp"
 
 #include <algorithm>
-#include <numbers>
 #include <string_view>
+
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kPatterns[] = {"mass", "funnel", "any"};
 constexpr std::string_view kRegimes[] = {"any",       "slumping",    "rolling",
                                          "cascading", "cataracting", "centrifuging"};
@@ -38,7 +38,7 @@ std::span<const FieldSpec<DesignTargets>> design_target_fields() {
       label_field<T>("required_flow_pattern", &T::required_flow_pattern, kPatterns,
                      "hopper: flow pattern the design must achieve", Presence::optional),
       number_field<T>("mass_flow_margin", &T::mass_flow_margin, dim::angle, "deg",
-                      Range::closed(0.0, 15.0 * kDeg),
+                      Range::closed(0.0, 15.0 * kDegree),
                       "hopper: margin kept below the mass-flow limit angle", Presence::optional),
       optional_number_field<T>("max_stopping_thickness", &T::max_stopping_thickness,
                                dim::length, "mm", Range{0.0, 10.0, false, true},

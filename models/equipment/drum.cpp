@@ -1,13 +1,9 @@
 #include "models/equipment/drum.hpp"
 
-#include <numbers>
-
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
-namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
-}
 
 std::span<const FieldSpec<Drum>> drum_fields() {
   static const FieldSpec<Drum> fields[] = {
@@ -21,7 +17,7 @@ std::span<const FieldSpec<Drum>> drum_fields() {
                          Range{0.0, 1000.0 * 2.0 * std::numbers::pi / 60.0, false, true},
                          "rotation speed"),
       optional_number_field<Drum>("wall_friction_angle", &Drum::wall_friction_angle, dim::angle,
-                                  "deg", Range::half_open(0.0, 90.0 * kDeg),
+                                  "deg", Range::half_open(0.0, 90.0 * kDegree),
                                   "wall friction angle of the material on the drum shell"),
   };
   return fields;

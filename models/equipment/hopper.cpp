@@ -4,15 +4,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kShapes[] = {"wedge", "conical"};
 // Walls flatter than this from the vertical make a flat-bottomed bin: the radial stress field
 // and Johanson's discharge model are for converging hoppers.
-constexpr double kMaxSemiAngle = 80.0 * kDeg;
+constexpr double kMaxSemiAngle = 80.0 * kDegree;
 }  // namespace
 
 double Hopper::outlet_height() const { return 0.5 * outlet_width / std::tan(semi_angle); }
@@ -52,7 +52,7 @@ std::span<const FieldSpec<Hopper>> hopper_fields() {
                                     Range{0.0, 50.0, false, true},
                                     "out-of-plane length of a wedge hopper's slot outlet"),
       optional_number_field<Hopper>("wall_friction_angle", &Hopper::wall_friction_angle,
-                                    dim::angle, "deg", Range::half_open(0.0, 90.0 * kDeg),
+                                    dim::angle, "deg", Range::half_open(0.0, 90.0 * kDegree),
                                     "wall friction angle of the material on the hopper wall "
                                     "(defaults to the material's)"),
   };

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {
@@ -102,6 +102,15 @@ void require_flow_factor(double ff) {
 }
 
 }  // namespace
+
+const char* arching_label(ArchingOutcome o) {
+  switch (o) {
+    case ArchingOutcome::critical_width: return "cohesive arch below B_c";
+    case ArchingOutcome::no_cohesive_arch: return "no cohesive arch";
+    case ArchingOutcome::no_gravity_outlet: return "no gravity outlet";
+  }
+  return "";
+}
 
 const char* to_string(ArchingOutcome o) {
   switch (o) {

@@ -17,6 +17,9 @@ enum class ArchingOutcome {
   no_gravity_outlet,  // above it everywhere (or again at high stress): flow aids needed
 };
 const char* to_string(ArchingOutcome o);
+// The label of the `arching` estimate: "cohesive arch below B_c", "no cohesive arch",
+// "no gravity outlet".
+const char* arching_label(ArchingOutcome o);
 
 // Where F(sigma1*) = sigma1*/ff. Closed form for linear and power-law flow functions, GSL
 // Brent on the bracketing table segment for a tabulated one.

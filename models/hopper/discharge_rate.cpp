@@ -6,7 +6,7 @@
 #include <string>
 
 #include "models/core/errors.hpp"
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {
@@ -83,6 +83,12 @@ double beverloo_slot_rate(double rho, double b, double slot_length, double d, do
                           double c2, double gravity) {
   return beverloo_slot_rate_per_metre(rho, b, d, k, c2, gravity) *
          effective_width(slot_length, k, d);
+}
+
+double rose_tanaka_factor(double theta, double phi_d) {
+  require_angle(theta);
+  require_angle(phi_d);
+  return theta < 0.5 * kPi - phi_d ? std::pow(std::tan(theta) * std::tan(phi_d), -0.35) : 1.0;
 }
 
 double hourglass_rate(FlowGeometry g, double rho, double b, double theta, double phi,

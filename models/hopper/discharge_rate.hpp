@@ -42,6 +42,12 @@ double beverloo_slot_rate(double bulk_density, double outlet_width, double slot_
                           double particle_size, double k = kBeverlooK, double c2 = 1.03,
                           double gravity = kGravity);
 
+// Rose & Tanaka (1956): a hopper steeper than its stagnant zone discharges faster than a flat
+// bottom, Beverloo's rate times F = (tan theta tan phi_d)^-0.35 for theta < 90 deg - phi_d; a
+// flatter one discharges as a flat bottom, F = 1. theta: semi-angle, phi_d: the stagnant-zone
+// boundary's angle to the horizontal, both in (0, 90 deg).
+double rose_tanaka_factor(double semi_angle, double stagnant_zone_angle);
+
 // Hourglass theory (Savage; Davidson & Nedderman), an upper bound: stress ratio
 // k = (1 + sin phi)/(1 - sin phi), sigma_r = 0 at the outlet arc and at the top radius r1.
 // Plane needs k > 2 (phi > 19.5 deg), conical k > 1.5.

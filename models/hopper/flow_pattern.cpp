@@ -12,16 +12,15 @@
 #include <stdexcept>
 
 #include "models/hopper/enstad_flow_factor.hpp"
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/gsl_errors_as_status.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
 std::string degrees(double rad) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f deg", rad / kDeg);
+  std::snprintf(text, sizeof text, "%.1f deg", rad / kDegree);
   return text;
 }
 
@@ -42,7 +41,7 @@ FlowFactorMinimum minimum_flow_factor(FlowGeometry g, double theta_max, double d
                                       double phi_w) {
   std::array<double, 3> params{static_cast<double>(geometry_index(g)), delta, phi_w};
   constexpr int kGrid = 16;
-  const double lo = 0.5 * kDeg;
+  const double lo = 0.5 * kDegree;
   double best_theta = lo, best = enstad_ff(lo, &params);
   std::array<double, kGrid + 1> thetas{}, values{};
   for (int i = 0; i <= kGrid; ++i) {
@@ -87,7 +86,7 @@ double conical_mass_flow_limit(double delta, double phi_w) {
 
 MassFlowLimit wedge_mass_flow_limit(double delta, double phi_w) {
   const double c = conical_mass_flow_limit(delta, phi_w);
-  return {c + 10.0 * kDeg, c + 8.0 * kDeg, c + 12.0 * kDeg,
+  return {c + 10.0 * kDegree, c + 8.0 * kDegree, c + 12.0 * kDegree,
           "interim wedge rule: conical Arnold-McLean limit + 8...12 deg"};
 }
 
@@ -95,7 +94,7 @@ MassFlowLimit mass_flow_limit(FlowGeometry g, double delta, double phi_w) {
   if (g == FlowGeometry::plane) return wedge_mass_flow_limit(delta, phi_w);
   const double c = conical_mass_flow_limit(delta, phi_w);
   // The RSF's last admissible root lies up to 0.2 deg beyond the fit (section 1.2).
-  return {c, c - 0.1 * kDeg, c + 0.2 * kDeg, "Arnold-McLean conical boundary"};
+  return {c, c - 0.1 * kDegree, c + 0.2 * kDegree, "Arnold-McLean conical boundary"};
 }
 
 FlowPatternVerdict classify_flow_pattern(FlowGeometry g, double theta, double delta,

@@ -41,6 +41,10 @@ struct FlowPatternVerdict {
   std::string reason;          // in words, for the report
 };
 
+// The labels of the flow_pattern_boundary estimate (FlowPatternVerdict::near_boundary).
+inline constexpr const char* kNearBoundary = "near the boundary";
+inline constexpr const char* kClearOfBoundary = "clear of the boundary";
+
 // Classifies a hopper of semi-angle theta; design_margin is the standard 3 deg.
 FlowPatternVerdict classify_flow_pattern(FlowGeometry g, double semi_angle,
                                          double effective_friction_angle,

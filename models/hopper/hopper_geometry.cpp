@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/units/angle.hpp"
+
 namespace feedflow {
 
 const char* to_string(FlowGeometry g) { return g == FlowGeometry::plane ? "plane" : "conical"; }
@@ -29,7 +31,7 @@ double wall_stress_angle(double delta, double phi_w) {
 double jenike_arch_factor(FlowGeometry g, double theta) {
   if (!(theta >= 0.0 && theta < 0.5 * std::numbers::pi))
     throw std::invalid_argument("hopper semi-angle must lie in [0, 90) deg");
-  const double deg = theta * 180.0 / std::numbers::pi;
+  const double deg = in_degrees(theta);
   return g == FlowGeometry::plane ? 1.0 + deg / 180.0 : 2.0 + deg / 60.0;
 }
 

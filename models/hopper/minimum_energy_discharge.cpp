@@ -4,7 +4,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/adaptive_integral.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 

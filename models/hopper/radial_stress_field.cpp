@@ -10,7 +10,9 @@
 #include <string>
 
 #include "models/core/errors.hpp"
-#include "models/hopper/numerics.hpp"
+#include "models/numerics/brent_root.hpp"
+#include "models/numerics/gsl_errors_as_status.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
@@ -24,7 +26,7 @@ constexpr double kAbsTol = 1e-12;
 
 std::string deg(double rad) {
   std::ostringstream s;
-  s << rad * 180.0 / kPi << " deg";
+  s << in_degrees(rad) << " deg";
   return s.str();
 }
 

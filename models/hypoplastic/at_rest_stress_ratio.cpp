@@ -1,13 +1,11 @@
 #include "models/hypoplastic/at_rest_stress_ratio.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
-#include <memory>
 #include <stdexcept>
+#include <string>
 
 #include "models/core/errors.hpp"
 #include "models/hypoplastic/stress_rate.hpp"
+#include "models/numerics/brent_root.hpp"
 
 namespace feedflow {
 namespace {
@@ -19,8 +17,7 @@ struct Problem {
 };
 
 // dT_xx/dT_zz - K for the state sigma_h = K sigma_v at mean pressure p.
-double rate_mismatch(double k, void* params) {
-  const auto& pr = *static_cast<const Problem*>(params);
+double rate_mismatch(double k, const Problem& pr) {
   const double vertical = 3.0 * pr.p / (1.0 + 2.0 * k);
   const Tensor3 stress = Eigen::Vector3d(k * vertical, k * vertical, vertical).asDiagonal();
   Tensor3 d = Tensor3::Zero();
@@ -34,21 +31,15 @@ double rate_mismatch(double k, void* params) {
 double at_rest_stress_ratio(const HypoplasticModel& model, double p, double e) {
   if (!(p > 0.0) || !(e > 0.0))
     throw std::invalid_argument("at_rest_stress_ratio: need mean pressure > 0 and void ratio > 0");
-  Problem problem{&model, p, e};
-  gsl_function f{&rate_mismatch, &problem};
-  double low = 0.02, high = 1.0;
-  if (rate_mismatch(low, &problem) * rate_mismatch(high, &problem) > 0.0)
+  const Problem problem{&model, p, e};
+  const auto mismatch = [&problem](double k) { return rate_mismatch(k, problem); };
+  if (mismatch(0.02) * mismatch(1.0) > 0.0)
     throw NumericalFailure("at_rest_stress_ratio: no K0 in [0.02, 1] at this state");
-  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &f, low, high);
-  for (int i = 0; i < 200; ++i) {
-    gsl_root_fsolver_iterate(solver.get());
-    low = gsl_root_fsolver_x_lower(solver.get());
-    high = gsl_root_fsolver_x_upper(solver.get());
-    if (gsl_root_test_interval(low, high, 0.0, 1e-12) == GSL_SUCCESS) break;
-  }
-  return gsl_root_fsolver_root(solver.get());
+  const BrentSearch root = brent_search(mismatch, 0.02, 1.0, {0.0, 1e-12, 200});
+  if (!root.converged())
+    throw NumericalFailure("at_rest_stress_ratio: Brent's method found no K0 in [0.02, 1] at "
+                           "this state (GSL status " + std::to_string(root.status) + ")");
+  return root.root;
 }
 
 }  // namespace feedflow

@@ -1,13 +1,12 @@
 #include "models/material/flow_properties.hpp"
 
 #include <algorithm>
-#include <numbers>
 
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::string_view kFlowFunctions[] = {"linear", "power_law", "tabulated"};
 // Strengths of bulk solids at low stress: up to 1 MPa (a cemented cake) [Pa].
 constexpr Range kStrengthRange{0.0, 1e6, true, true};
@@ -28,8 +27,8 @@ std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
       number_field<F>("ff_coefficient", &F::ff_coefficient, dim::dimensionless, "-",
                       kStrengthRange,
                       "power-law flow function: a of sigma_c = a sigma1^b, stresses in Pa", opt),
-      number_field<F>("ff_exponent", &F::ff_exponent, dim::dimensionless, "-", Range::closed(0.0, 2.0),
-                      "power-law flow function: exponent b", opt),
+      number_field<F>("ff_exponent", &F::ff_exponent, dim::dimensionless, "-",
+                      Range::closed(0.0, 2.0), "power-law flow function: exponent b", opt),
       number_list_field<F>("ff_major_stress", &F::ff_major_stress, dim::pressure, "Pa",
                            kStressRange, "tabulated flow function: major consolidation stresses"),
       number_list_field<F>("ff_strength", &F::ff_strength, dim::pressure, "Pa", kStrengthRange,
@@ -37,12 +36,13 @@ std::span<const FieldSpec<FlowProperties>> flow_property_fields() {
       number_field<F>("ff_uncertainty", &F::ff_uncertainty, dim::dimensionless, "%",
                       Range::half_open(0.0, 1.0), "relative uncertainty of the flow function", opt),
       number_field<F>("effective_friction_angle", &F::effective_friction_angle, dim::angle, "deg",
-                      Range::open(0.0, 90.0 * kDeg), "effective angle of internal friction delta"),
+                      Range::open(0.0, 90.0 * kDegree),
+                      "effective angle of internal friction delta"),
       number_field<F>("effective_friction_uncertainty", &F::effective_friction_uncertainty,
-                      dim::angle, "deg", Range::closed(0.0, 15.0 * kDeg),
-                      "uncertainty of delta", opt),
-      number_field<F>("wall_friction_uncertainty", &F::wall_friction_uncertainty, dim::angle,
-                      "deg", Range::closed(0.0, 15.0 * kDeg), "uncertainty of the wall friction angle",
+                      dim::angle, "deg", Range::closed(0.0, 15.0 * kDegree), "uncertainty of delta",
+                      opt),
+      number_field<F>("wall_friction_uncertainty", &F::wall_friction_uncertainty, dim::angle, "deg",
+                      Range::closed(0.0, 15.0 * kDegree), "uncertainty of the wall friction angle",
                       opt),
       number_list_field<F>("density_major_stress", &F::density_major_stress, dim::pressure, "Pa",
                            kStressRange, "measured compressibility: major consolidation stresses"),
@@ -76,9 +76,10 @@ std::span<const FieldSpec<SurfaceFlowProperties>> surface_flow_fields() {
   using S = SurfaceFlowProperties;
   constexpr auto opt = Presence::optional;
   static const FieldSpec<S> fields[] = {
-      number_field<S>("theta1", &S::theta1, dim::angle, "deg", Range::half_open(0.0, 90.0 * kDeg),
+      number_field<S>("theta1", &S::theta1, dim::angle, "deg",
+                      Range::half_open(0.0, 90.0 * kDegree),
                       "angle below which every layer stays at rest (mu_s = tan theta1)"),
-      number_field<S>("theta2", &S::theta2, dim::angle, "deg", Range::open(0.0, 90.0 * kDeg),
+      number_field<S>("theta2", &S::theta2, dim::angle, "deg", Range::open(0.0, 90.0 * kDegree),
                       "angle above which no layer stops (mu_2 = tan theta2)"),
       number_field<S>("stop_length", &S::stop_length, dim::length, "mm", Range{0.0, 1.0, false, true},
                       "length L of Pouliquen's h_stop law"),
@@ -91,7 +92,7 @@ std::span<const FieldSpec<SurfaceFlowProperties>> surface_flow_fields() {
       number_field<S>("cohesion", &S::cohesion, dim::pressure, "Pa", kStrengthRange,
                       "low-stress cohesion for the infinite-slope check", opt),
       number_field<S>("theta_uncertainty", &S::theta_uncertainty, dim::angle, "deg",
-                      Range::closed(0.0, 10.0 * kDeg), "uncertainty of theta1 and theta2", opt),
+                      Range::closed(0.0, 10.0 * kDegree), "uncertainty of theta1 and theta2", opt),
       number_field<S>("stop_length_uncertainty", &S::stop_length_uncertainty, dim::dimensionless,
                       "%", Range::half_open(0.0, 1.0), "relative uncertainty of L", opt),
   };

@@ -1,7 +1,6 @@
 #include "models/material/hypoplastic_parameters.hpp"
 
-#include <numbers>
-
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
@@ -12,9 +11,8 @@ constexpr Range kVoidRatioRange{0.0, 10.0, false, true};
 
 std::span<const FieldSpec<HypoplasticParameters>> hypoplastic_fields() {
   using P = HypoplasticParameters;
-  constexpr double deg = std::numbers::pi / 180.0;
   static const FieldSpec<P> fields[] = {
-      number_field<P>("phi_c", &P::phi_c, dim::angle, "deg", Range::open(0.0, 90.0 * deg),
+      number_field<P>("phi_c", &P::phi_c, dim::angle, "deg", Range::open(0.0, 90.0 * kDegree),
                       "critical-state friction angle"),
       number_field<P>("h_s", &P::h_s, dim::pressure, "kPa", Range{0.0, 1e12, false, true},
                       "granulate hardness (pressure scale of the compression law)"),

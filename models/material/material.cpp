@@ -1,7 +1,6 @@
 #include "models/material/material.hpp"
 
-#include <numbers>
-
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
@@ -14,14 +13,13 @@ constexpr Range kSizeRange{1e-6, 0.5, true, true};
 
 std::span<const FieldSpec<BulkProperties>> bulk_fields() {
   using B = BulkProperties;
-  constexpr double deg = std::numbers::pi / 180.0;
   static const FieldSpec<B> fields[] = {
       number_field<B>("density", &B::density, dim::density, "kg/m^3", kDensityRange,
                       "design bulk density"),
       optional_number_field<B>("loose_density", &B::loose_density, dim::density, "kg/m^3",
                                kDensityRange, "loose (poured) bulk density, at most the design density"),
       number_field<B>("wall_friction_angle", &B::wall_friction_angle, dim::angle, "deg",
-                      Range::half_open(0.0, 90.0 * deg),
+                      Range::half_open(0.0, 90.0 * kDegree),
                       "wall friction angle on the reference wall"),
       optional_number_field<B>("moisture_content", &B::moisture_content, dim::dimensionless,
                                "%", Range::half_open(0.0, 1.0), "moisture content (wet basis)"),

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "models/units/angle.hpp"
+
 namespace feedflow {
 namespace {
 
@@ -31,12 +33,12 @@ constexpr UnitSymbol kUnits[] = {
     {"min", 60.0, dim::time, false},
     {"h", 3600.0, dim::time, false},
     {"rad", 1.0, dim::angle, true},
-    {"deg", kPi / 180.0, dim::angle, false},
-    {"degree", kPi / 180.0, dim::angle, false},
-    {"degrees", kPi / 180.0, dim::angle, false},
-    {"\xC2\xB0", kPi / 180.0, dim::angle, false},  // °
+    {"deg", kDegree, dim::angle, false},
+    {"degree", kDegree, dim::angle, false},
+    {"degrees", kDegree, dim::angle, false},
+    {"\xC2\xB0", kDegree, dim::angle, false},  // °
     {"rev", 2.0 * kPi, dim::angle, false},
-    {"rpm", 2.0 * kPi / 60.0, dim::angular_speed, false},
+    {"rpm", kRpm, dim::angular_speed, false},
     {"Hz", 1.0, dim::rate, true},
     {"N", 1.0, dim::force, true},
     {"Pa", 1.0, dim::pressure, true},

@@ -13,7 +13,8 @@ namespace feedflow::render {
 
 class OffscreenContext {
  public:
-  // Throws std::runtime_error when OSMesa cannot create or bind a 3.3 core context.
+  // Loads libOSMesa on first use: throws NotAvailable when it cannot be loaded
+  // (osmesa_library.cpp), std::runtime_error when OSMesa cannot create or bind a 3.3 core context.
   OffscreenContext();
   ~OffscreenContext();
   OffscreenContext(const OffscreenContext&) = delete;

@@ -63,7 +63,8 @@ struct Snapshot {
 
 class SnapshotRenderer {
  public:
-  // Creates the off-screen OpenGL context; throws std::runtime_error if OSMesa cannot.
+  // Creates the off-screen OpenGL context; throws NotAvailable if libOSMesa cannot be loaded,
+  // std::runtime_error if OSMesa cannot create the context.
   SnapshotRenderer();
   ~SnapshotRenderer();
   SnapshotRenderer(const SnapshotRenderer&) = delete;

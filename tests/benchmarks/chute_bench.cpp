@@ -3,25 +3,23 @@
 // 20 / 10 / 5 mm cells. The designer uses 10 mm. Target: under 1 s.
 #include <benchmark/benchmark.h>
 
-#include <numbers>
-
 #include "models/chute/chute_release.hpp"
+#include "models/units/angle.hpp"
 
 namespace {
 
 // state.range(0): ramp angle in tenths of a degree; state.range(1): cell size in mm.
 void ChuteL1ReleaseToRest(benchmark::State& state) {
   using namespace feedflow;
-  constexpr double kDeg = std::numbers::pi / 180.0;
   Chute c;
-  c.angle = static_cast<double>(state.range(0)) * 0.1 * kDeg;
+  c.angle = static_cast<double>(state.range(0)) * 0.1 * kDegree;
   c.width = 0.76;
   c.length = 2.0;
   c.gate_opening = 0.22;
   c.bin_length = 0.57;
   c.bin_height = 0.915;
   c.fill_height = 0.5;
-  const PouliquenLaw law{27 * kDeg, 40 * kDeg, 10e-3, 0.136, 0.0};
+  const PouliquenLaw law{27 * kDegree, 40 * kDegree, 10e-3, 0.136, 0.0};
   ChuteReleaseOptions o;
   o.cell_size = static_cast<double>(state.range(1)) * 1e-3;
   RampFlowResult r;

@@ -15,12 +15,12 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <numbers>
 #include <random>
 #include <sstream>
 #include <tuple>
 
 #include "fullsim/dem/dem_engine.hpp"
+#include "models/units/angle.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace {
@@ -46,13 +46,10 @@ DemEngine& settled_bed(int law, int tilt = 0, int copy = 0) {
   s.material.particle = {kRadius, 390.0};
   s.material.particle_particle = pine(0.5, 0.8);
   s.material.particle_wall = pine(0.2, 0.6);
-  s.law = law == 0 ? ContactLawChoice{NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt,
-                                      CohesionLaw::none}
-                   : ContactLawChoice{NormalLaw::hysteretic_nonlinear2, TangentialLaw::history,
-                                      RollingLaw::cdt, CohesionLaw::none};
-  const double a = tilt * std::numbers::pi / 180.0;
+  s.law = law == 0 ? choose_contact_law("hertz", "mindlin", "cdt", "none")
+                   : choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "none");
+  const double a = tilt * kDegree;
   s.gravity = 9.81 * Vec3(std::sin(a), 0.0, -std::cos(a));
-  s.quiet = true;
   const double spacing = 2.0 * kRadius;
   SimulationBox box{Vec3::Zero(), Vec3(kNx * spacing, kNy * spacing, (kNz + 4) * spacing),
                     {true, true, false}};

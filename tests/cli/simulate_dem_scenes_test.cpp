@@ -4,6 +4,8 @@
 // checkpoint written, the reduced-model values beside the DEM ones.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <algorithm>
 
 #include <nlohmann/json.hpp>
@@ -88,6 +90,23 @@ TEST_F(SimulateDem, PlaneRestartContinuesTheSameSeries) {
   const auto json2 = nlohmann::json::parse(slurp(dir_ / "second/results.json"));
   EXPECT_GT(json2.at("results").at("deposit_front").at("value").get<double>(),
             json.at("results").at("deposit_front").at("value").get<double>());
+}
+
+// A checkpoint continues only the case it was written for: a restart with another drum
+// diameter, speed or slab depth is refused as bad input (exit 2) naming the key and both values,
+// and writes nothing.
+TEST_F(SimulateDem, RestartOfAnotherCaseIsRefused) {
+  const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin;
+  ASSERT_EQ(run_feedflow(run + " --time 0.05s --out first", dir_).exit_code, 0);
+  for (const auto& [set, key, was] : {std::tuple{"drum.diameter=100mm", "drum.diameter", "145 mm"},
+                                      std::tuple{"drum.speed=10rpm", "drum.speed", "20 rpm"},
+                                      std::tuple{"dem.slab_depth=20mm", "dem.slab_depth", "18 mm"}}) {
+    const auto r = run_feedflow(run + " --set " + set + " --time 0.1s --restart first/checkpoint.h5 --out second", dir_);
+    EXPECT_EQ(r.exit_code, 2) << set;
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(was), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "second" / "results.json"));
+  }
 }
 
 // A slab thinner than two neighbour cutoffs is refused naming the key (exit 2), and no output

@@ -9,13 +9,12 @@
 
 #include "designer/case/case_loader.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 
 namespace fs = std::filesystem;
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 const char* kGoodHopper = R"([case]
 name = "t"
@@ -67,11 +66,11 @@ TEST_F(TempCase, PilotHopperLoadsInSi) {
   ASSERT_EQ(c.kind(), EquipmentKind::hopper);
   const auto& h = std::get<Hopper>(c.equipment);
   EXPECT_EQ(h.shape, "wedge");
-  EXPECT_NEAR(h.semi_angle, 30 * kDeg, 1e-12);
+  EXPECT_NEAR(h.semi_angle, 30 * kDegree, 1e-12);
   EXPECT_NEAR(h.outlet_width, 0.060, 1e-12);
   EXPECT_NEAR(h.fill_height, 0.68, 1e-12);
   EXPECT_NEAR(h.bin_width, 0.6, 1e-12);
-  EXPECT_NEAR(*h.wall_friction_angle, 8.5 * kDeg, 1e-12);
+  EXPECT_NEAR(*h.wall_friction_angle, 8.5 * kDegree, 1e-12);
   EXPECT_EQ(c.material.name, "loblolly_pine");
   EXPECT_NEAR(c.material.bulk.density, 290.0, 1e-12);
   EXPECT_NEAR(c.design.outlet_safety_factor, 1.2, 1e-12);
@@ -94,7 +93,7 @@ TEST_F(TempCase, EveryShippedCaseLoads) {
 // The inclined planes and the drum carry the seed's geometry in SI.
 TEST_F(TempCase, ChuteAndDrumCasesInSi) {
   const auto chute = std::get<Chute>(load_case("cases/inclined_plane_37.toml").equipment);
-  EXPECT_NEAR(chute.angle, 37 * kDeg, 1e-12);
+  EXPECT_NEAR(chute.angle, 37 * kDegree, 1e-12);
   EXPECT_NEAR(chute.width, 0.76, 1e-12);
   EXPECT_NEAR(chute.bin_length, 0.57, 1e-12);
   EXPECT_NEAR(chute.bin_height, 0.915, 1e-12);
@@ -182,7 +181,7 @@ TEST_F(TempCase, SetOverridesWithUnits) {
   const Case c = load_case(path, std::vector<SetOverride>{{"hopper.semi_angle", "32deg"},
                                                           {"hopper.shape", "wedge"},
                                                           {"design.required_throughput", "5 t/h"}});
-  EXPECT_NEAR(std::get<Hopper>(c.equipment).semi_angle, 32 * kDeg, 1e-12);
+  EXPECT_NEAR(std::get<Hopper>(c.equipment).semi_angle, 32 * kDegree, 1e-12);
   EXPECT_NEAR(*c.design.required_throughput, 5000.0 / 3600.0, 1e-12);
   const std::string m = error_of(kGoodHopper, {{"hopper.semi_angle", "32 mm"}});
   EXPECT_EQ(m.rfind("--set: hopper.semi_angle:", 0), 0u) << m;
@@ -202,7 +201,7 @@ TEST_F(TempCase, MaterialOverrides) {
   EXPECT_EQ(c.material.sources.at("psd.d50"), "command line (--set)");
   EXPECT_NE(c.material.sources.at("hypoplastic.phi_c").find("Table 1"), std::string::npos);
   // The hopper's wall friction defaults to the material's.
-  EXPECT_NEAR(*std::get<Hopper>(c.equipment).wall_friction_angle, 8.5 * kDeg, 1e-12);
+  EXPECT_NEAR(*std::get<Hopper>(c.equipment).wall_friction_angle, 8.5 * kDegree, 1e-12);
 }
 
 // An unknown material name is refused naming case.material and the known materials.
@@ -240,7 +239,7 @@ TEST_F(TempCase, StandaloneMaterialInCase) {
   EXPECT_EQ(c.material.name, "sawdust");
   EXPECT_NEAR(c.material.bulk.density, 200.0, 1e-12);
   EXPECT_FALSE(c.material.hypoplastic.has_value());
-  EXPECT_NEAR(*std::get<Hopper>(c.equipment).wall_friction_angle, 20 * kDeg, 1e-12);
+  EXPECT_NEAR(*std::get<Hopper>(c.equipment).wall_friction_angle, 20 * kDegree, 1e-12);
   // Incomplete: the bulk section's required keys are named.
   const std::string m = error_of(std::string(kGoodHopper) + "[material]\nname = \"x\"\n[material.bulk]\ndensity = 1\n");
   EXPECT_NE(m.find("material.bulk.wall_friction_angle: missing"), std::string::npos) << m;

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "designer/case/case_loader.hpp"
-#include "designer/simulate/dem_simulation.hpp"
+#include "designer/simulate/simulation.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 
 namespace feedflow {
@@ -33,7 +33,7 @@ SimulationOutcome simulate(const std::string& file, std::vector<SetOverride> set
   r.out = out;
   r.restart = restart;
   r.progress = false;
-  return simulate_with_dem(r);
+  return feedflow::simulate(r);
 }
 
 const Estimate* find(const DesignRecord& r, const std::string& name) {

@@ -4,18 +4,16 @@
 
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 
 #include "designer/case/material_library.hpp"
 #include "designer/design/case_inputs.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 
 namespace fs = std::filesystem;
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The compiled-in pine (no folders searched) holds seed Table 1, Table 2 and the bulk data.
 TEST(MaterialLibrary, BuiltInPineHoldsSeedTables) {
@@ -23,13 +21,13 @@ TEST(MaterialLibrary, BuiltInPineHoldsSeedTables) {
   EXPECT_EQ(m.origin, "built-in");
   EXPECT_NEAR(m.bulk.density, 290.0, 1e-12);
   EXPECT_NEAR(*m.bulk.loose_density, 182.0, 1e-12);
-  EXPECT_NEAR(m.bulk.wall_friction_angle, 8.5 * kDeg, 1e-12);
+  EXPECT_NEAR(m.bulk.wall_friction_angle, 8.5 * kDegree, 1e-12);
   EXPECT_NEAR(*m.bulk.moisture_content, 0.06, 1e-12);
   EXPECT_NEAR(m.psd->d10, 0.38e-3, 1e-15);
   EXPECT_NEAR(m.psd->d50, 0.82e-3, 1e-15);
   EXPECT_NEAR(m.psd->d90, 1.79e-3, 1e-15);
   const auto& hp = *m.hypoplastic;  // Table 1
-  EXPECT_NEAR(hp.phi_c, 47.3 * kDeg, 1e-12);
+  EXPECT_NEAR(hp.phi_c, 47.3 * kDegree, 1e-12);
   EXPECT_NEAR(hp.h_s, 187.6e3, 1e-9);
   EXPECT_NEAR(hp.n, 0.30, 1e-12);
   EXPECT_NEAR(hp.e_d0, 0.50, 1e-12);

@@ -1,11 +1,8 @@
-// Utilities of long runs: the progress line's ETA, the performance block, atomic files.
+// Utilities of long runs: the progress line's ETA and the performance block.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "fullsim/common/atomic_file.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "fullsim/common/run_report.hpp"
 
@@ -66,45 +63,6 @@ TEST(RunReport, RendersPhasesAndShares) {
   EXPECT_DOUBLE_EQ(report.phase_seconds("pairs"), 6.5);
   { auto scope = report.time("output"); }
   EXPECT_GE(report.phase_seconds("output"), 0.0);
-}
-
-// An atomic write creates folders, replaces the old file whole and leaves no temporary behind;
-// an unwritable target throws and leaves nothing.
-TEST(AtomicFile, WritesWholeOrNothing) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "feedflow_atomic_test";
-  fs::remove_all(dir);
-  write_file_atomically(dir / "a" / "r.json", "first");
-  write_file_atomically(dir / "a" / "r.json", "second");
-  std::ifstream in(dir / "a" / "r.json");
-  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  EXPECT_EQ(content, "second");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir / "a"), fs::directory_iterator{}), 1);
-  std::ofstream(dir / "file") << "x";
-  EXPECT_THROW(write_file_atomically(dir / "file" / "r.json", "y"), std::runtime_error);
-  fs::remove_all(dir);
-}
-
-// A staged file that is never committed leaves nothing (so a set of files is all or none); a
-// link's target is replaced in its own folder and the link stays; a folder is refused.
-TEST(AtomicFile, StagedFilesCommitOrVanish) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "feedflow_pending_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir / "real");
-  { PendingFile abandoned(dir / "r.json", "never"); }
-  EXPECT_TRUE(fs::is_empty(dir / "real"));
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
-  std::ofstream(dir / "real" / "t.json") << "old";
-  fs::create_symlink("real/t.json", dir / "link.json");
-  PendingFile through_link(dir / "link.json", "new");
-  EXPECT_EQ(through_link.target(), fs::canonical(dir / "real" / "t.json"));
-  through_link.commit();
-  EXPECT_TRUE(fs::is_symlink(dir / "link.json"));
-  std::ifstream in(dir / "real" / "t.json");
-  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "new");
-  EXPECT_THROW(PendingFile(dir / "real", "x"), std::runtime_error);
-  fs::remove_all(dir);
 }
 
 }  // namespace

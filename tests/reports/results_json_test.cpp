@@ -72,6 +72,34 @@ TEST(ResultsJson, MalformedIsRefused) {
   }
 }
 
+// The verdict's findings are written with their quantity, numbers and limit and read back; a
+// note's status is "note"; a file written before findings existed reads with none.
+TEST(ResultsJson, FindingsRoundTripAndOldFilesStillRead) {
+  DesignRecord a = sample();
+  a.verdict.findings = {{VerdictStatus::pass, "critical_outlet_width", "outlet 60 mm >= 1.2 x 31 mm", 0.0236, 0.018,
+                         0.031, 0.05, "m"},
+                        {std::nullopt, "arching", "arching: arches below 23.6 mm", std::nullopt, std::nullopt,
+                         std::nullopt, std::nullopt, ""}};
+  const auto j = to_json(a);
+  const auto& f = j.at("verdict").at("findings");
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_EQ(f[0].at("quantity"), "critical_outlet_width");
+  EXPECT_EQ(f[0].at("limit"), 0.05);
+  EXPECT_EQ(f[1].at("status"), "note");
+  EXPECT_TRUE(f[1].at("value").is_null());
+  const DesignRecord b = design_record_from_json(nlohmann::ordered_json::parse(j.dump()));
+  ASSERT_EQ(b.verdict.findings.size(), 2u);
+  EXPECT_EQ(b.verdict.findings[0].status, VerdictStatus::pass);
+  EXPECT_DOUBLE_EQ(*b.verdict.findings[0].high, 0.031);
+  EXPECT_EQ(b.verdict.findings[0].unit, "m");
+  EXPECT_FALSE(b.verdict.findings[1].status.has_value());
+  EXPECT_FALSE(b.verdict.findings[1].limit.has_value());
+  auto old = j;
+  old["verdict"].erase("findings");
+  EXPECT_TRUE(design_record_from_json(old).verdict.findings.empty());
+  EXPECT_FALSE(to_json(sample()).at("verdict").contains("findings"));  // none made, none written
+}
+
 // The text summary shows inputs and results with their units, the band and the verdict.
 TEST(TextSummary, ShowsUnitsBandAndVerdict) {
   const std::string t = text_summary(sample());

@@ -19,14 +19,7 @@ DepositProfile measure_deposit(const ParticleStore& p, double ramp_length, doubl
     d.height[b] = std::max(d.height[b], p.position[i].z() + p.radius[i] - surface);
     d.front = std::max(d.front, d.x[b]);
   }
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t b = 0; b < bins; ++b)
-    if (std::abs(d.x[b] - 0.5 * ramp_length) <= 0.05 * ramp_length) {
-      sum += d.height[b];
-      ++n;
-    }
-  d.mid_ramp_height = n ? sum / n : 0.0;
+  d.mid_ramp = mid_ramp_thickness(d.x, d.height, ramp_length);
   return d;
 }
 

@@ -2,9 +2,11 @@
 // The deposit left on a ramp once the flow has stopped, measured as the seed's DEM did
 // (data.md 3: "h_stop = max particle height along the ramp"): the ramp is cut into bins along
 // the slope and each bin's height is the highest particle top (centre + radius) above the ramp
-// surface; h_stop is the mean height of the bins within 5 % of the ramp length of mid-ramp.
+// surface; h_stop at mid-ramp as every rung measures it (fullsim/common/deposit_measurement.hpp:
+// the mean of the bins within 5 % of the ramp length of mid-ramp, its band their range).
 #include <vector>
 
+#include "fullsim/common/deposit_measurement.hpp"
 #include "fullsim/dem/particle_store.hpp"
 
 namespace feedflow {
@@ -12,7 +14,7 @@ namespace feedflow {
 struct DepositProfile {
   std::vector<double> x;       // bin centres along the slope from the gate [m]
   std::vector<double> height;  // highest particle top above the ramp surface [m] (0: empty bin)
-  double mid_ramp_height = 0.0;  // h_stop at mid-ramp [m]
+  DepositThickness mid_ramp;    // h_stop at mid-ramp with its band [m]
   double front = 0.0;          // farthest bin with a particle in it [m]
 };
 

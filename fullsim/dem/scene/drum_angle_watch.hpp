@@ -1,17 +1,16 @@
 #pragma once
-// When a drum run has converged, and its steady result. Samples are taken at a fixed interval
-// after the shell starts; the first `spin_up` seconds are the bed being lifted to its dynamic
-// angle and are not used. The run has converged when the mean angle of the last `window`
-// seconds and of the window before differ by less than `tolerance`; the steady result is over
-// those two windows: the mean angle with a band of two standard deviations of the sampled
-// angle (the surface fluctuates: the band says how far one snapshot may lie from the mean),
-// and the averaged bed state with the angle's peak-to-peak swing; the surface bulge is that of
+// When a DEM drum run has converged, and its steady result. Samples are taken at a fixed
+// interval after the shell starts; the angle, its band and the convergence are measured as on
+// every rung (fullsim/common/steady_angle.hpp: spin-up left out, two windows, mean with 2 SD);
+// beside them the bed state is averaged over the same windows, with the angle's peak-to-peak
+// swing; the surface bulge is that of
 // the time-averaged surface profile (column by column), so the snapshot noise of a coarse bed
 // does not read as curvature. A bed without a free surface (centrifuging) has converged once
 // the windows have passed.
 #include <optional>
 #include <vector>
 
+#include "fullsim/common/steady_angle.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
 
 namespace feedflow {
@@ -31,7 +30,7 @@ struct DrumSteadyResult {
 class DrumAngleWatch {
  public:
   DrumAngleWatch(double drum_radius, double spin_up, double window, double tolerance)
-      : radius_(drum_radius), spin_up_(spin_up), window_(window), tolerance_(tolerance) {}
+      : radius_(drum_radius), windows_{spin_up, window, tolerance} {}
 
   void add(const DrumSample& sample) { samples_.push_back(sample); }
   bool converged() const;
@@ -39,11 +38,14 @@ class DrumAngleWatch {
   // the run ends before converging); empty without samples after the spin-up.
   std::optional<DrumSteadyResult> steady() const;
   const std::vector<DrumSample>& samples() const { return samples_; }
-  double spin_up() const { return spin_up_; }
-  double window() const { return window_; }
+  double spin_up() const { return windows_.spin_up; }
+  double window() const { return windows_.window; }
 
  private:
-  double radius_, spin_up_, window_, tolerance_;
+  std::vector<AngleSample> angles() const;
+
+  double radius_;
+  AngleWindows windows_;
   std::vector<DrumSample> samples_;
 };
 

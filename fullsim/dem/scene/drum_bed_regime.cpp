@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numbers>
+
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 
@@ -29,7 +30,6 @@ std::string text(const char* format, double a, double b) {
 }  // namespace
 
 DrumRegimeCall classify_drum_bed(const DrumBedState& s, const DrumRegimeCriteria& c) {
-  constexpr double deg = 180.0 / std::numbers::pi;
   if (s.solid_body_fraction >= c.centrifuging_solid_body && s.over_top_fraction >= c.centrifuging_over_top)
     return {DrumBedRegime::centrifuging,
             text("%.0f %% of the bed turns with the shell and %.0f %% is over the top of the drum",
@@ -43,7 +43,7 @@ DrumRegimeCall classify_drum_bed(const DrumBedState& s, const DrumRegimeCriteria
   if (s.solid_body_fraction >= c.slumping_solid_body && s.angle_swing >= c.slumping_swing)
     return {DrumBedRegime::slumping, text("%.0f %% of the bed turns with the shell between avalanches; the "
                                           "surface angle swings by %.1f deg", 100 * s.solid_body_fraction,
-                                          s.angle_swing * deg)};
+                                          in_degrees(s.angle_swing))};
   const double one_particle = s.particles > 0.0 ? 1.0 / s.particles : 0.0;
   const double cascading_airborne = std::max(c.cascading_airborne, one_particle);
   if (s.airborne_fraction >= cascading_airborne)

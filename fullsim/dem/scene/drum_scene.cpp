@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "models/drum/drum_regime.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 
@@ -94,8 +95,10 @@ void DrumScene::rebuild(DemCheckpoint checkpoint) {
   engine_->prepare(quiet);
 }
 
-const FillReport& DrumScene::fill(std::ostream& log) {
-  fill_report_ = rain_fill(*engine_, rain(), log);
+const FillReport& DrumScene::fill(std::ostream& log, ProgressSink* progress) {
+  RainFillSettings settings = rain();
+  settings.progress = progress;
+  fill_report_ = rain_fill(*engine_, settings, log);
   if (fill_report_.interrupted) return fill_report_;
   engine_->run_steps(1);  // the list rebuilt after the trim: the bed can be checkpointed
   if (fill_report_.trimmed_count == 0)
@@ -110,7 +113,7 @@ void DrumScene::start_rotation(std::ostream& log) {
     w.moving(Vec3::Zero(), Vec3(0.0, spec_.speed, 0.0));
   rebuild(std::move(c));
   rotation_start_ = engine_->time();
-  log << "drum: the shell turns at " << spec_.speed * 30.0 / 3.141592653589793 << " rpm from t = "
+  log << "drum: the shell turns at " << in_rpm(spec_.speed) << " rpm from t = "
       << rotation_start_ << " s\n";
 }
 

@@ -13,7 +13,7 @@
 //   DrumScene drum(settings, spec);
 //   drum.fill(log);
 //   drum.start_rotation(log);
-//   while (...) { drum.engine().run_until(t); watch.add(drum.sample()); }
+//   while (...) { drum.engine().advance_to(t); watch.add(drum.sample()); }
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -58,7 +58,7 @@ class DrumScene {
   RainFillSettings rain() const;
   // Rain-fall, settling, trimming to the fill line (logs each phase). Returns the fill's
   // report; `interrupted` when Ctrl-C stopped it (nothing to continue from).
-  const FillReport& fill(std::ostream& log);
+  const FillReport& fill(std::ostream& log, ProgressSink* progress = nullptr);
   // The shell turns from now on; the sampling clock starts.
   void start_rotation(std::ostream& log);
 

@@ -114,8 +114,10 @@ RainFillSettings InclinedPlaneScene::rain() const {
   return s;
 }
 
-const FillReport& InclinedPlaneScene::fill(std::ostream& log) {
-  fill_report_ = rain_fill(*engine_, rain(), log);
+const FillReport& InclinedPlaneScene::fill(std::ostream& log, ProgressSink* progress) {
+  RainFillSettings settings = rain();
+  settings.progress = progress;
+  fill_report_ = rain_fill(*engine_, settings, log);
   return fill_report_;
 }
 

@@ -54,7 +54,7 @@ class InclinedPlaneScene {
   RainFillSettings rain() const;
   // Rain-fall, settling, trimming (logs each phase). Returns the fill's report; `interrupted`
   // when Ctrl-C stopped it (nothing to continue from).
-  const FillReport& fill(std::ostream& log);
+  const FillReport& fill(std::ostream& log, ProgressSink* progress = nullptr);
   const FillReport& fill_report() const { return fill_report_; }
   void open_gate(std::ostream& log);  // the sampling clock starts
   // True once the kinetic energy per particle is below 1e-3 m g d (a particle of the bed moving

@@ -8,9 +8,9 @@
 #include <random>
 #include <vector>
 
-#include "fullsim/common/interrupt_request.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
+#include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
 namespace {
@@ -65,13 +65,14 @@ double kept_max_speed(const ParticleStore& p, const std::optional<double>& trim_
   return std::sqrt(v2);
 }
 
-// Runs until `t` in chunks, so Ctrl-C is seen within a few hundred steps; false when it was.
-bool run_until_or_interrupted(DemEngine& engine, double t) {
+// Runs the whole steps that cover `duration`, in chunks, so Ctrl-C is seen within a few
+// hundred steps; false when it was.
+bool run_or_interrupted(DemEngine& engine, double duration) {
   constexpr long kChunk = 200;
-  const long steps = static_cast<long>(std::ceil((t - engine.time()) / engine.time_step() - 1e-9));
-  for (long done = 0; done < steps; done += kChunk) {
+  const double t = engine.time() + engine.whole_steps(duration, StepRounding::up);
+  while (!engine.reached(t)) {
     if (interrupt_requested()) return false;
-    engine.run_steps(std::min(kChunk, steps - done));
+    engine.advance_to(t, kChunk);
   }
   return true;
 }
@@ -158,6 +159,10 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
     while (report.inserted_mass + sphere_mass <= due_mass * (1.0 + 1e-12) &&
            report.inserted_mass + 0.5 * sphere_mass < s.target_mass &&
            report.inserted_count < s.target_count) {
+      if (report.inserted_count % 1024 == 0 && interrupt_requested()) {
+        report.interrupted = true;
+        return;
+      }
       bool placed = false;
       for (int a = 0; a < s.attempts && !placed; ++a) {
         Vec3 x;
@@ -186,19 +191,27 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   };
 
   insert_batch();
+  if (report.interrupted) return report;
   engine.prepare(log);
   const double goal = std::isfinite(s.target_mass)
                           ? s.target_mass
                           : static_cast<double>(std::min<std::size_t>(s.target_count, 1u << 30)) * sphere_mass;
-  ProgressLine progress = ProgressLine::for_terminal("DEM fill", goal, "kg", !s.progress);
+  SilentProgress silent;
+  ProgressSink& progress = s.progress ? *s.progress : silent;
+  progress.begin("DEM fill", goal, "kg");
+  struct FinishOnReturn {
+    ProgressSink& sink;
+    ~FinishOnReturn() { sink.finish(); }
+  } finish_progress{progress};
   double next_note = 0.1 * goal;
   const auto wall_start = ProgressLine::Clock::now();
   while (!target_reached() && engine.time() - t0 < s.insert_time_cap) {
-    if (!run_until_or_interrupted(engine, engine.time() + s.batch_interval)) {
+    if (!run_or_interrupted(engine, s.batch_interval)) {
       report.interrupted = true;
       return report;
     }
     insert_batch();
+    if (report.interrupted) return report;
     progress.update(report.inserted_mass);
     if (report.inserted_mass >= next_note) {  // a line per tenth for logs that are not terminals
       const double elapsed =
@@ -221,7 +234,7 @@ FillReport rain_fill(DemEngine& engine, const RainFillSettings& s, std::ostream&
   const double settle_start = engine.time();
   long settle_checks = 0;
   do {
-    if (!run_until_or_interrupted(engine, engine.time() + s.settle_check_interval)) {
+    if (!run_or_interrupted(engine, s.settle_check_interval)) {
       report.interrupted = true;
       return report;
     }

@@ -27,6 +27,7 @@
 #include <ostream>
 #include <string>
 
+#include "fullsim/common/progress_sink.hpp"
 #include "fullsim/dem/dem_engine.hpp"
 
 namespace feedflow {
@@ -54,7 +55,7 @@ struct RainFillSettings {
   double band_origin = 0.0;          // [m] height of the lowest band's bottom
   double band_height = std::numeric_limits<double>::infinity();  // [m]; inf: one band (0)
   std::uint64_t seed = 1;
-  bool progress = false;             // a progress line (inserted mass, ETA) on a terminal
+  ProgressSink* progress = nullptr;  // the inserted mass against the target (none: silent)
   // Whether a centre may receive a sphere (inside the container); none: everywhere.
   std::function<bool(const Vec3& centre, double radius)> admits;
 
@@ -85,6 +86,8 @@ struct FillReport {
 // Fills `engine` (prepared here if it is not yet; it needs no particles beforehand), settles,
 // trims and tags the layers. Writes one line per phase to `log`. Throws InputError for
 // inconsistent settings (no rate, empty region, a radius that differs from the engine's).
+// Ctrl-C (interrupt_request.hpp) is seen between insertions and steps: the report says
+// `interrupted` and nothing can be continued.
 FillReport rain_fill(DemEngine& engine, const RainFillSettings& settings, std::ostream& log);
 
 // The surface the region follows: the highest centre among particles slower than

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
@@ -13,8 +14,6 @@ namespace {
 constexpr double kFollowGap = 0.03;      // [m] drop height over the resting fill
 constexpr double kRainSpeed = 0.5;       // [m/s] initial downward speed of the rain
 constexpr double kFillDuration = 0.6;    // [s] the rate fills the hopper in about this time
-
-double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 }  // namespace
 
@@ -140,8 +139,8 @@ std::string WedgeHopperSlab::describe() const {
                 "  hopper slab: wedge theta = %.4g deg, outlet W = %.4g mm, bin B = %.4g mm, fill "
                 "H = %.4g m above the apex (%.4g m above the outlet), wedge-bin transition at "
                 "%.4g m, slab depth %.4g mm (%s)\n",
-                deg(semi_angle), outlet_width * 1e3, bin_width * 1e3, fill_height, fill_top(),
-                bin_bottom(), depth * 1e3,
+                in_degrees(semi_angle), outlet_width * 1e3, bin_width * 1e3, fill_height,
+                fill_top(), bin_bottom(), depth * 1e3,
                 periodic()              ? "periodic front/back"
                 : depth < 2.0 * radius * (1.0 + 1e-3)
                     ? "one layer between front and back planes; centres in the mid-plane stay "

@@ -13,11 +13,10 @@
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/drum_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow::cel {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct DrumTurn {
   double largest_angle = 0.0;  // of the free surface after the start [rad]
@@ -45,7 +44,8 @@ DrumTurn turn_drum(double wall_friction_angle, double turning, DrumFrame frame =
     t.final_angle = s.slope_angle;
   }
   std::printf("wall friction %.0f deg: largest surface angle %.2f deg, after %.2f s %.2f deg\n",
-              wall_friction_angle / kDeg, t.largest_angle / kDeg, turning, t.final_angle / kDeg);
+              wall_friction_angle / kDegree, t.largest_angle / kDegree, turning,
+              t.final_angle / kDegree);
   return t;
 }
 
@@ -54,7 +54,7 @@ DrumTurn turn_drum(double wall_friction_angle, double turning, DrumFrame frame =
 // remap's noise) while the shell turns by 48 deg. (In the shell's frame the whole bed must
 // then be advected backwards through the grid's staircase at the shell: 13.9 deg at most.)
 TEST(CelDrumScene, FrictionlessShellLeavesTheBedLevel) {
-  EXPECT_LT(turn_drum(0.0, 0.4, DrumFrame::laboratory).largest_angle, 2.0 * kDeg);
+  EXPECT_LT(turn_drum(0.0, 0.4, DrumFrame::laboratory).largest_angle, 2.0 * kDegree);
 }
 
 // A 20 deg shell (the seed FEM's) carries the bed with it before it fails: after 0.4 s at
@@ -62,9 +62,9 @@ TEST(CelDrumScene, FrictionlessShellLeavesTheBedLevel) {
 // (measured 48.25 deg in the shell's frame, 44 deg in the laboratory's; friction cannot turn
 // the bed faster than the shell).
 TEST(CelDrumScene, RoughShellCarriesTheBedAtMostAtShellSpeed) {
-  const DrumTurn t = turn_drum(20.0 * kDeg, 0.4);
-  EXPECT_GT(t.final_angle, 35.0 * kDeg);
-  EXPECT_LT(t.largest_angle, 0.4 * 20.0 * 2.0 * std::numbers::pi / 60.0 + 3.0 * kDeg);
+  const DrumTurn t = turn_drum(20.0 * kDegree, 0.4);
+  EXPECT_GT(t.final_angle, 35.0 * kDegree);
+  EXPECT_LT(t.largest_angle, 0.4 * 20.0 * 2.0 * std::numbers::pi / 60.0 + 3.0 * kDegree);
 }
 
 struct DrumRoll {
@@ -83,7 +83,7 @@ DrumRoll roll_drum(double rpm, double h, double turning) {
   drum.length = 0.202;
   drum.fill_fraction = 0.5;
   drum.speed = rpm * 2.0 * std::numbers::pi / 60.0;
-  CelScene scene = make_drum_scene(drum, 20.0 * kDeg, {290.0, 0.7102}, h);
+  CelScene scene = make_drum_scene(drum, 20.0 * kDegree, {290.0, 0.7102}, h);
   CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));
   while (run.phase() == ScenePhase::gravity) run.step();
   const DrumSection d = drum_section(drum, h);
@@ -105,7 +105,7 @@ DrumRoll roll_drum(double rpm, double h, double turning) {
   std::size_t k = 0;
   for (; k < angles.size(); ++k) {
     peak = std::max(peak, angles[k]);
-    if (angles[k] < peak - 10.0 * kDeg) break;
+    if (angles[k] < peak - 10.0 * kDegree) break;
   }
   r.first_avalanche = k < times.size() ? times[k] : turning;
   double sum = 0.0, sum2 = 0.0;
@@ -122,7 +122,7 @@ DrumRoll roll_drum(double rpm, double h, double turning) {
   }
   std::printf("%.0f rpm, h = %.0f mm: first avalanche %.2f s after the start, then %.2f +- %.2f "
               "deg over %d samples, %.1f %% of them at rest on the shell\n", rpm, h * 1e3,
-              r.first_avalanche, r.mean_angle / kDeg, r.sd_angle / kDeg, r.samples,
+              r.first_avalanche, r.mean_angle / kDegree, r.sd_angle / kDegree, r.samples,
               100.0 * r.resting_share);
   return r;
 }
@@ -139,8 +139,8 @@ TEST(CelDrumScene, KeepsFlowingAfterTheFirstAvalancheAt20Rpm) {
   EXPECT_LT(r.first_avalanche, 1.5);
   EXPECT_GT(r.samples, 50);
   EXPECT_LT(r.resting_share, 0.1);
-  EXPECT_GT(r.mean_angle, 30.0 * kDeg);
-  EXPECT_LT(r.mean_angle, 60.0 * kDeg);
+  EXPECT_GT(r.mean_angle, 30.0 * kDegree);
+  EXPECT_LT(r.mean_angle, 60.0 * kDegree);
 }
 
 // The seed's FEM mesh (5 mm cells), 8 s of turning at 10 and 20 rpm: both keep flowing (a
@@ -162,7 +162,7 @@ TEST(CelDrumScene, RestartInTheTurningFrameIsBitIdentical) {
   drum.length = 0.202;
   drum.fill_fraction = 0.5;
   drum.speed = 20.0 * 2.0 * std::numbers::pi / 60.0;
-  const CelScene scene = make_drum_scene(drum, 20.0 * kDeg, {290.0, 0.7102}, 0.02);
+  const CelScene scene = make_drum_scene(drum, 20.0 * kDegree, {290.0, 0.7102}, 0.02);
   const HypoplasticModel pine = make_hypoplastic_model(loblolly_pine_table1());
   CelSceneRun straight(scene, pine);
   while (straight.phase() == ScenePhase::gravity) straight.step();

@@ -4,17 +4,17 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/chute_scene.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "models/units/angle.hpp"
+#include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 const SceneMaterial kPine{290.0, 0.7102};
 HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
 
@@ -22,11 +22,11 @@ HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1());
 double pilot_hopper_final_rate(double outlet, double cell) {
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30.0 * kDeg;
+  h.semi_angle = 30.0 * kDegree;
   h.outlet_width = outlet;
   h.fill_height = 0.68;
   h.bin_width = 0.6;
-  CelSceneRun run(make_hopper_scene(h, 8.5 * kDeg, kPine, cell), pine());
+  CelSceneRun run(make_hopper_scene(h, 8.5 * kDegree, kPine, cell), pine());
   while (run.phase() == ScenePhase::gravity) run.step();
   const double event = run.event_time();
   while (run.solver().time() < event + 1.0) run.step();
@@ -64,13 +64,14 @@ double seed_ramp_deposit(double angle, double gate_opening) {
   const double mid = c.bin_length + 2.0 * h + 0.5 * c.length;
   const int i = static_cast<int>(mid / h);
   const double thickness = (t[i - 1] + t[i] + t[i + 1]) / 3.0;
-  std::printf("seed ramp %.1f deg: %.1f mm at mid-ramp\n", angle / kDeg, thickness * 1e3);
+  std::printf("seed ramp %.1f deg: %.1f mm at mid-ramp\n", angle / kDegree, thickness * 1e3);
   return thickness;
 }
 
 // The deposit at mid-ramp is thicker at 29.5 deg than at 37 deg (seed, Fig. 5B trend).
 TEST(CelSeedRamp, LONG_DepositThickerAt29_5ThanAt37Degrees) {
-  EXPECT_GT(seed_ramp_deposit(29.5 * kDeg, 0.35), 1.2 * seed_ramp_deposit(37.0 * kDeg, 0.135));
+  EXPECT_GT(seed_ramp_deposit(29.5 * kDegree, 0.35),
+            1.2 * seed_ramp_deposit(37.0 * kDegree, 0.135));
 }
 
 }  // namespace

@@ -7,16 +7,16 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "models/units/angle.hpp"
+#include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 const SceneMaterial kPine{290.0, 0.7102};
 HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
 
@@ -25,7 +25,7 @@ HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1());
 Hopper small_wedge() {
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30.0 * kDeg;
+  h.semi_angle = 30.0 * kDegree;
   h.outlet_width = 0.06;
   h.fill_height = 0.35;
   h.bin_width = 0.3;
@@ -43,7 +43,7 @@ Hopper pilot_wedge(double outlet) {
 
 // The small twin's scene with a shorter gravity phase than the default (it settles faster).
 CelScene small_scene(HopperSection section, double cell) {
-  CelScene s = make_hopper_scene(small_wedge(), 8.5 * kDeg, kPine, cell, section);
+  CelScene s = make_hopper_scene(small_wedge(), 8.5 * kDegree, kPine, cell, section);
   s.gravity.ramp_time = 0.3;
   s.gravity.min_time = 0.35;
   return s;
@@ -180,7 +180,7 @@ TEST(CelHopperSection, NoNodeIsDecidedByRoundOff) {
       for (HopperSection section : {HopperSection::half, HopperSection::full}) {
         Hopper hopper = small_wedge();
         hopper.outlet_width = outlet;
-        const CelScene scene = make_hopper_scene(hopper, 8.5 * kDeg, kPine, cell, section);
+        const CelScene scene = make_hopper_scene(hopper, 8.5 * kDegree, kPine, cell, section);
         const auto& g = scene.grid;
         for (std::size_t k = 0; k + 1 < scene.options.rigid_walls.size(); ++k) {  // not the gate
           const PlacedWall placed(scene.options.rigid_walls[k], 0.0);
@@ -220,7 +220,8 @@ TEST(CelHopperSection, FullSectionDischargesLikeTheHalfSliceMirrorSymmetric) {
 
 SectionRun run_pilot(double outlet, HopperSection section) {
   const Hopper hopper = pilot_wedge(outlet);
-  return run_section(hopper, make_hopper_scene(hopper, 8.5 * kDeg, kPine, 0.01, section), section, 1.0);
+  return run_section(hopper, make_hopper_scene(hopper, 8.5 * kDegree, kPine, 0.01, section),
+                     section, 1.0);
 }
 
 // The seed's pilot hopper in the full section at 10 mm cells, 1 s after the opening: W = 60 mm

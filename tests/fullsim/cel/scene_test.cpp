@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <numbers>
 
 #include "fullsim/cel/cel_checkpoint.hpp"
 #include "fullsim/cel/cel_field_snapshots.hpp"
@@ -17,11 +16,12 @@
 #include "fullsim/cel/chute_scene.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "models/units/angle.hpp"
+#include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 const SceneMaterial kPine{290.0, 0.7102};
 HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
 
@@ -30,7 +30,7 @@ HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1());
 Hopper small_hopper(double outlet) {
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30.0 * kDeg;
+  h.semi_angle = 30.0 * kDegree;
   h.outlet_width = outlet;
   h.fill_height = 0.35;
   h.bin_width = 0.3;
@@ -48,7 +48,7 @@ void shorten_gravity_phase(CelScene& scene) {
 }
 
 HopperRun run_hopper(double outlet, double after_event) {
-  CelScene scene = make_hopper_scene(small_hopper(outlet), 8.5 * kDeg, kPine, 0.01);
+  CelScene scene = make_hopper_scene(small_hopper(outlet), 8.5 * kDegree, kPine, 0.01);
   shorten_gravity_phase(scene);
   CelSceneRun run(scene, pine());
   HopperRun r;
@@ -121,7 +121,7 @@ ChuteRelease release_on_ramp(double angle) {
   ChuteRelease r{sum / n, s.kinetic_energy() / peak,
                  (s.total_mass() + s.discharge().total() + s.removed_mass()) / run.initial_mass() - 1.0};
   std::printf("%.1f deg twin: mid-ramp layer %.2f mm, KE/peak %.3g after %.2f s, run-off %.3g of "
-              "the mass, balance %.2g\n", angle / kDeg, 1e3 * r.layer, r.energy_ratio,
+              "the mass, balance %.2g\n", angle / kDegree, 1e3 * r.layer, r.energy_ratio,
               s.time() - run.event_time(), s.discharge().total() / run.initial_mass(), r.balance);
   return r;
 }
@@ -133,7 +133,7 @@ ChuteRelease release_on_ramp(double angle) {
 // foam, rho (1 + e) far below rho_g. The 37 deg twin still flows after 3 s, KE 0.43 of its
 // peak, so the angle order is checked at full size in full_size_scene_test.cpp.)
 TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
-  const ChuteRelease r = release_on_ramp(29.5 * kDeg);
+  const ChuteRelease r = release_on_ramp(29.5 * kDegree);
   EXPECT_LT(r.energy_ratio, 3e-2);
   EXPECT_GT(r.layer, 0.1 * 0.02);
   EXPECT_LT(std::abs(r.balance), 1e-12);
@@ -142,7 +142,7 @@ TEST(CelChuteScene, ReleaseComesToRestLeavingALayer) {
 // The free surface of a bed filled to 0.1 m with a 20 deg slope cut in it (cells filled by
 // area) is found within a degree and at the right height.
 TEST(CelFreeSurface, FindsTheSlopeOfAnInclinedSurface) {
-  const double h = 0.005, slope = std::tan(20.0 * kDeg);
+  const double h = 0.005, slope = std::tan(20.0 * kDegree);
   CelOptions o;
   CelSolver s(make_plane_strain_grid(60, 60, h), pine(), o);
   for (int i = 0; i < 60; ++i) {  // column i filled to 0.1 + slope (x - 0.15), by area
@@ -151,8 +151,8 @@ TEST(CelFreeSurface, FindsTheSlopeOfAnInclinedSurface) {
   }
   const FreeSurface f = free_surface(s, 0.05, 0.25);
   ASSERT_GT(f.x.size(), 30u);
-  std::printf("surface angle %.3f deg from %zu columns\n", f.slope_angle / kDeg, f.x.size());
-  EXPECT_NEAR(f.slope_angle / kDeg, 20.0, 1.0);
+  std::printf("surface angle %.3f deg from %zu columns\n", f.slope_angle / kDegree, f.x.size());
+  EXPECT_NEAR(f.slope_angle / kDegree, 20.0, 1.0);
   EXPECT_NEAR(f.y[f.y.size() / 2], 0.1 + slope * (f.x[f.x.size() / 2] - 0.15), 0.5 * h);
 }
 
@@ -160,7 +160,7 @@ TEST(CelFreeSurface, FindsTheSlopeOfAnInclinedSurface) {
 // scene continues bit-identically: every cell and node field, the ledger and the time equal
 // those of the uninterrupted run after 200 more steps.
 TEST(CelCheckpoint, RestartIsBitIdentical) {
-  const CelScene scene = make_hopper_scene(small_hopper(0.06), 8.5 * kDeg, kPine, 0.02);
+  const CelScene scene = make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.02);
   CelSceneRun straight(scene, pine());
   while (straight.phase() == ScenePhase::gravity) straight.step();
   for (int k = 0; k < 100; ++k) straight.step();
@@ -190,7 +190,7 @@ TEST(CelCheckpoint, RestartIsBitIdentical) {
 // fraction, and an XDMF sidecar with one 2DCoRectMesh grid per time pointing at them; reopened
 // in append mode (a restart) the series continues.
 TEST(CelFieldSnapshots, WritesFieldsAndSidecar) {
-  CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDeg, kPine, 0.02), pine());
+  CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.02), pine());
   const auto file = std::filesystem::temp_directory_path() / "feedflow_cel_fields_test.h5";
   {
     CelFieldSnapshots snaps(file, false);
@@ -227,10 +227,10 @@ TEST(CelFieldSnapshots, WritesFieldsAndSidecar) {
 
 // A checkpoint of another grid is refused with a message naming the file.
 TEST(CelCheckpoint, RefusesAnotherGrid) {
-  CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDeg, kPine, 0.02), pine());
+  CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.02), pine());
   const auto file = std::filesystem::temp_directory_path() / "feedflow_cel_grid_test.h5";
   write_cel_checkpoint(file, run, {});
-  const CelScene finer = make_hopper_scene(small_hopper(0.06), 8.5 * kDeg, kPine, 0.01);
+  const CelScene finer = make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.01);
   try {
     read_cel_checkpoint(file, finer.grid);
     ADD_FAILURE() << "a checkpoint of another grid was accepted";

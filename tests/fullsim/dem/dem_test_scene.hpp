@@ -34,8 +34,7 @@ inline DemSettings hertz_settings(double restitution, double friction, double ro
   s.material.particle = {kRadius, kDensity};
   s.material.particle_particle = soft_contact(restitution, friction, rolling_friction);
   s.material.particle_wall = soft_contact(restitution, friction, rolling_friction);
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
-  s.quiet = true;
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "fullsim/dem/scene/discharge_measurement.hpp"
+#include "fullsim/common/discharge_measurement.hpp"
 #include "fullsim/dem/scene/flow_order.hpp"
 
 namespace feedflow {
@@ -53,25 +53,19 @@ TEST(DischargeMeasurement, TooFewBatchesGiveNoSteadyRate) {
   EXPECT_FALSE(steady_discharge_rate(t, m, 0.0).found);
 }
 
-// The cumulative curve from sink events sums the masses and merges events of one step.
-TEST(DischargeMeasurement, CurveFromSinkEvents) {
-  const std::vector<SinkEvent> e{{0.1, 1, 0.5}, {0.1, 2, 0.5}, {0.3, 3, 1.0}};
-  const DischargeCurve c = discharge_curve(e);
-  ASSERT_EQ(c.time.size(), 2u);
-  EXPECT_DOUBLE_EQ(c.mass[0], 1.0);
-  EXPECT_DOUBLE_EQ(discharged_by(c, 0.2), 1.0);
-  EXPECT_DOUBLE_EQ(discharged_by(c, 0.3), 2.0);
-  EXPECT_DOUBLE_EQ(discharged_by(c, 0.05), 0.0);
-}
-
 // Arched needs both: nothing out for the quiet time and (almost) no motion; an empty hopper
-// is "emptied", not arched.
+// is "emptied", not arched. The last discharge is the end of the last sample interval that
+// carried more than the trickle.
 TEST(DischargeMeasurement, ArchedOnlyWhenQuietAndStill) {
   const double mass = 1.0;
   EXPECT_EQ(discharge_state(2.0, 1.0, 1e-6, mass, 100), DischargeState::arched);
   EXPECT_EQ(discharge_state(2.0, 1.8, 1e-6, mass, 100), DischargeState::flowing);  // recent exit
   EXPECT_EQ(discharge_state(2.0, 1.0, 1e-2, mass, 100), DischargeState::flowing);  // still moving
   EXPECT_EQ(discharge_state(2.0, 1.0, 0.0, 0.0, 0), DischargeState::emptied);
+  const std::vector<double> t{0.0, 0.1, 0.2, 0.3, 0.4}, m{0.0, 0.5, 0.5001, 0.6, 0.6001};
+  EXPECT_DOUBLE_EQ(last_discharge_time(t, m, 0.0, 0.01), 0.3);  // 0.2 -> 0.3 carried 1 kg/s
+  EXPECT_DOUBLE_EQ(last_discharge_time(t, m, 0.35, 0.01), 0.35);  // nothing after 0.35
+  EXPECT_DOUBLE_EQ(last_discharge_time(t, m, 0.0, 0.0), 0.4);     // any exit counts at zero trickle
 }
 
 // First in, first out: bands leaving in order give F = 1 (mass flow); the top band leaving

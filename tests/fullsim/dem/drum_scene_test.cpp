@@ -12,12 +12,11 @@
 
 #include "fullsim/dem/scene/drum_angle_watch.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
+#include "models/units/angle.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A bed of particles (R = 1.5 mm) packed on a square grid in the lower part of a 145 mm drum
 // whose surface is the line through the axis tilted by `tilt` (raised towards -x).
@@ -38,9 +37,10 @@ std::vector<SurfacePoint> tilted_bed(double tilt, double airborne_height = 0.0) 
 // the bed do not pull the surface up.
 TEST(DrumFreeSurface, FitReturnsTheTiltOfASyntheticBed) {
   for (double tilt : {0.0, 20.0, 35.0, 45.0}) {
-    const auto fit = fit_drum_surface(bed_surface_points(tilted_bed(tilt * kDeg, 0.02), 1.5e-3, 0.0725), 0.0725);
+    const auto fit = fit_drum_surface(
+        bed_surface_points(tilted_bed(tilt * kDegree, 0.02), 1.5e-3, 0.0725), 0.0725);
     ASSERT_TRUE(fit.valid);
-    EXPECT_NEAR(-fit.slope_angle / kDeg, tilt, 1.0) << "tilt " << tilt;
+    EXPECT_NEAR(-fit.slope_angle / kDegree, tilt, 1.0) << "tilt " << tilt;
     // A flat surface bends by no more than the grid's steps (2 radii = 0.04 R) allow.
     EXPECT_LT(fit.bulge, 0.1) << "tilt " << tilt;
   }
@@ -98,9 +98,8 @@ DemSettings twin_settings() {
   DemSettings s;
   s.material.particle = {3e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
-  s.material.particle_wall = testing::pine_table2_contact(std::tan(20 * kDeg), 0.6);
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
-  s.quiet = true;
+  s.material.particle_wall = testing::pine_table2_contact(std::tan(20 * kDegree), 0.6);
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }
 
@@ -183,18 +182,19 @@ DrumSteadyResult run_twin(double rpm) {
   std::ostringstream log;
   drum.start_rotation(log);
   const double period = 60.0 / rpm;
-  DrumAngleWatch watch(0.0725, std::max(0.3, 0.12 * period), 0.3, 1.5 * kDeg);
+  DrumAngleWatch watch(0.0725, std::max(0.3, 0.12 * period), 0.3, 1.5 * kDegree);
   while (!watch.converged() && watch.samples().size() < 400) {
-    drum.engine().run_until(drum.engine().time() + 0.02);
+    drum.engine().advance_to(drum.engine().time() + 0.02);
     watch.add(drum.sample());
   }
   const auto r = *watch.steady();
   std::cerr << rpm << " rpm: " << drum.engine().particles().size() << " particles, angle "
-            << r.angle / kDeg << " +- " << r.angle_sd / kDeg << " deg, swing " << r.state.angle_swing / kDeg
-            << " deg, bulge " << r.state.surface_bulge << ", airborne " << r.state.airborne_fraction
-            << ", over top " << r.state.over_top_fraction << ", solid " << r.state.solid_body_fraction
-            << ", shell " << r.state.shell_speed_ratio << ", to t = " << r.to << " s: "
-            << classify_drum_bed(r.state).reason << '\n';
+            << r.angle / kDegree << " +- " << r.angle_sd / kDegree << " deg, swing "
+            << r.state.angle_swing / kDegree << " deg, bulge " << r.state.surface_bulge
+            << ", airborne " << r.state.airborne_fraction << ", over top "
+            << r.state.over_top_fraction << ", solid " << r.state.solid_body_fraction << ", shell "
+            << r.state.shell_speed_ratio << ", to t = " << r.to
+            << " s: " << classify_drum_bed(r.state).reason << '\n';
   return r;
 }
 
@@ -206,8 +206,8 @@ DrumSteadyResult run_twin(double rpm) {
 TEST(DrumTwin, RollsAt10RpmCascadesAt50RpmAngleRises) {
   const auto slow = run_twin(10);
   EXPECT_EQ(classify_drum_bed(slow.state).regime, DrumBedRegime::rolling);
-  EXPECT_GT(slow.angle, 26.6 * kDeg);
-  EXPECT_LT(slow.angle, 60 * kDeg);
+  EXPECT_GT(slow.angle, 26.6 * kDegree);
+  EXPECT_LT(slow.angle, 60 * kDegree);
   const auto fast = run_twin(50);
   EXPECT_EQ(classify_drum_bed(fast.state).regime, DrumBedRegime::cascading);
   EXPECT_GT(fast.angle, slow.angle + slow.angle_sd);

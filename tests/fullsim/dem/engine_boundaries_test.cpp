@@ -71,10 +71,10 @@ TEST(DemBoundaries, OutletSinkRemovesAndBooksTheMass) {
   e.set_outlet_sink(OutletSink::plane(Vec3::Zero(), -Vec3::UnitZ()));
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_until(0.1);
+  e.advance_to(0.1);
   const auto& sink = *e.outlet_sink();
   EXPECT_EQ(e.particles().size(), 48u - sink.removed_count());
-  e.run_until(0.2);
+  e.advance_to(0.2);
   EXPECT_EQ(e.particles().size(), 0u);
   EXPECT_EQ(sink.removed_count(), 48u);
   EXPECT_EQ(sink.removed_mass(), mass);  // the same masses summed in the same order
@@ -96,12 +96,12 @@ TEST(DemBoundaries, WallRemovedAtItsTimeLetsTheSphereFall) {
   std::ostringstream plan;
   e.prepare(plan);
   EXPECT_NE(plan.str().find("removed at t = 0.05 s"), std::string::npos) << plan.str();
-  e.run_until(0.0499);
+  e.advance_to(0.0499);
   const double resting = e.particles().position[0].z();
   EXPECT_NEAR(resting, 0.0115, 1e-5);
-  e.run_until(0.05);
+  e.advance_to(0.05);
   const double t0 = e.time();
-  e.run_until(0.07);
+  e.advance_to(0.07);
   const double fall = e.particles().position[0].z() - resting;
   const double t = e.time() - t0;
   EXPECT_NEAR(fall, -0.5 * 9.81 * t * t, 0.01 * 0.5 * 9.81 * t * t);
@@ -119,7 +119,7 @@ TEST(DemBoundaries, TranslatingFloorCarriesTheSphere) {
                                                                         Vec3::Zero()));
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_until(0.1);
+  e.advance_to(0.1);
   const double floor = e.walls()[0].point().z();
   EXPECT_NEAR(floor, 0.01, 1e-4);
   EXPECT_NEAR(e.particles().position[0].z(), floor + kRadius, 1e-5);

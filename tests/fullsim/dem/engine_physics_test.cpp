@@ -45,14 +45,14 @@ TEST(DemEngine, ElasticGasConservesEnergy) {
   e.prepare(plan);
   EXPECT_NE(plan.str().find("rolling kernel skipped: mu_r = 0"), std::string::npos) << plan.str();
   EXPECT_NE(plan.str().find("tangential kernel skipped: mu = 0"), std::string::npos);
-  EXPECT_EQ(e.effective_law().rolling, RollingLaw::none);
+  EXPECT_TRUE(e.effective_law().rolling.is<NoRolling>());
   const double e0 = total_energy(e);
   s.requested_time_step = e.time_step() / 4.0;
   DemEngine fine(s, box, p);
   add_box_walls(fine, box.lower, box.upper);
   std::ostringstream quiet;
   fine.prepare(quiet);
-  fine.run_until(0.02);
+  fine.advance_to(0.02);
   const double drift = std::abs(total_energy(fine) - e0) / e0;
   std::printf("elastic gas: %ld steps of %.3g s, relative energy drift %.3g, %zu rebuilds\n",
               fine.step(), fine.time_step(), drift, fine.neighbours().rebuild_count());
@@ -71,7 +71,7 @@ TEST(DemEngine, SphereDroppedOnPlaneSettlesAtTheHertzOverlap) {
   e.add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_until(0.3);
+  e.advance_to(0.3);
   const double m = e.particles().mass[0];
   const double estar = effective_youngs_modulus(1e6, 0.3);
   // Solve m g = (4/3) E* sqrt(R) delta^1.5.
@@ -99,7 +99,7 @@ TEST(DemEngine, SphereRollsInsideARotatingCylinder) {
   e.prepare(plan);
   EXPECT_NE(plan.str().find("allows for moving walls up to 0.0552 m/s"), std::string::npos)
       << plan.str();  // Omega (R_drum - R - 0.1 mm): the sphere's distance from the axis
-  e.run_until(0.3);
+  e.advance_to(0.3);
   const ParticleStore& q = e.particles();
   const Vec3 x = q.position[0];
   const Vec3 radial = Vec3(x.x(), 0.0, x.z());
@@ -127,7 +127,7 @@ TEST(DemEngine, PouredPackingComesToRest) {
   add_box_walls(e, box.lower, box.upper);
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_until(0.5);
+  e.advance_to(0.5);
   std::printf("pour: %zu spheres, max speed %.3g m/s after %ld steps\n%s", e.particles().size(),
               e.max_speed(), e.step(), e.performance_report().c_str());
   EXPECT_LT(e.max_speed(), 5e-3);

@@ -24,8 +24,7 @@ DemSettings twin_settings() {
   s.material.particle = {3e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
   s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
-  s.quiet = true;
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }
 
@@ -41,7 +40,7 @@ TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
   rain.settle_time_cap = 0.1;
   const FillReport f = rain_fill(e, rain, log);
   e.set_wall_removal_time("gate", e.time());
-  e.run_until(e.time() + 0.25);
+  e.advance_to(e.time() + 0.25);
   const OutletSink& sink = *e.outlet_sink();
   ASSERT_GT(sink.removed_count(), 20u);  // it discharged
   dem_test::expect_mass_books_balance(e, f);

@@ -6,18 +6,16 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <numbers>
 #include <set>
 #include <sstream>
 
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
+#include "models/units/angle.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // The deposit height of a bin is its highest particle top above the surface, mid-ramp is the
 // mean over the middle 10 %, and particles off the ramp (in the bin, x < 0) do not count.
@@ -34,7 +32,7 @@ TEST(DepositProfile, HighestTopPerBinAndMidRamp) {
   EXPECT_NEAR(d.height[50], 0.004, 1e-12);
   EXPECT_NEAR(d.front, 0.905, 1e-12);
   // bins 45..54 (centres within 0.05 of 0.5): two non-empty, eight empty
-  EXPECT_NEAR(d.mid_ramp_height, (0.020 + 0.004) / 10.0, 1e-12);
+  EXPECT_NEAR(d.mid_ramp.value, (0.020 + 0.004) / 10.0, 1e-12);
 }
 
 // Reduced twin of the seed's inclined plane: bin 70 x 60 mm fill (about 1/8 of the seed's
@@ -49,10 +47,9 @@ std::unique_ptr<InclinedPlaneScene> filled_plane(double angle_deg, std::ostream&
   s.material.particle = {3e-3, 390.0};
   s.material.particle_particle = testing::pine_table2_particle_particle();
   s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = {NormalLaw::hertz, TangentialLaw::mindlin, RollingLaw::cdt, CohesionLaw::none};
-  s.quiet = true;
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   InclinedPlaneSpec spec;
-  spec.angle = angle_deg * kDeg;
+  spec.angle = angle_deg * kDegree;
   spec.ramp_length = 0.25;
   spec.bin_length = 0.07;
   spec.bin_height = 0.12;
@@ -68,7 +65,7 @@ std::unique_ptr<InclinedPlaneScene> filled_plane(double angle_deg, std::ostream&
 void run_to_rest(InclinedPlaneScene& plane, std::ostream& log) {
   plane.open_gate(log);
   while (plane.engine().time() - plane.release_time() < 0.2 || !plane.flow_stopped()) {
-    plane.engine().run_until(plane.engine().time() + 0.02);
+    plane.engine().advance_to(plane.engine().time() + 0.02);
     if (plane.engine().time() - plane.release_time() > 5.0) break;
   }
 }
@@ -80,7 +77,7 @@ DepositProfile run_plane(double angle_deg) {
   const auto d = plane->deposit();
   std::cerr << log.str() << angle_deg << " deg: " << plane->engine().particles().size()
             << " particles, stopped after " << plane->engine().time() - plane->release_time()
-            << " s, h_stop(mid) " << d.mid_ramp_height * 1e3 << " mm, front " << d.front << " m, profile";
+            << " s, h_stop(mid) " << d.mid_ramp.value * 1e3 << " mm, front " << d.front << " m, profile";
   for (std::size_t b = 0; b < d.x.size(); b += 3) std::cerr << ' ' << d.height[b] * 1e3;
   std::cerr << '\n';
   return d;

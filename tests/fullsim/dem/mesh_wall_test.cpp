@@ -241,7 +241,7 @@ TEST(MeshWall, SphereInAVGrooveTouchesBothFaces) {
   e.add_mesh_wall(MeshWall("groove", std::move(m)));
   std::ostringstream plan;
   e.prepare(plan);
-  e.run_until(0.3);
+  e.advance_to(0.3);
   const Vec3 x = e.particles().position[0];
   std::array<MeshTouch, MeshWall::kMaxContacts> touch;
   const int n = e.mesh_walls()[0].touches(x, kRadius, touch);

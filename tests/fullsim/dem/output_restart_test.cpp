@@ -9,9 +9,9 @@
 #include <sstream>
 
 #include "fullsim/common/hdf5_file.hpp"
-#include "fullsim/common/interrupt_request.hpp"
-#include "fullsim/dem/dem_run_with_output.hpp"
+#include "fullsim/dem/dem_checkpoint.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
+#include "models/os/interrupt_request.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
@@ -262,22 +262,6 @@ TEST(DemOutputRestart, XdmfSidecarNamesExistingDatasets) {
   }
   H5Fclose(f);
   EXPECT_EQ(items, 4u * 6u);  // geometry and five attributes per snapshot
-  fs::remove_all(dir);
-}
-
-// An interrupt request (the Ctrl-C flag) stops the run loop before its next step and leaves a
-// readable checkpoint of the step reached; without one the run completes.
-TEST(DemOutputRestart, InterruptWritesACheckpointBeforeStopping) {
-  const fs::path dir = scratch("interrupt");
-  DemEngine e = make_restart_scene(restart_settings());
-  clear_interrupt_request();
-  EXPECT_EQ(run_dem_with_output(e, 10, {nullptr, {}}), DemRunEnd::completed);
-  request_interrupt();
-  const DemRunEnd end = run_dem_with_output(e, 100, {nullptr, dir / "stop.h5"});
-  clear_interrupt_request();
-  EXPECT_EQ(end, DemRunEnd::interrupted);
-  EXPECT_EQ(e.step(), 10);
-  EXPECT_EQ(read_dem_checkpoint(dir / "stop.h5").step, 10);
   fs::remove_all(dir);
 }
 

@@ -6,20 +6,19 @@
 #include <numbers>
 
 #include "models/chute/chute_release.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-PouliquenLaw pine_like() { return {27 * kDeg, 40 * kDeg, 10e-3, 0.136, 0.0}; }
+PouliquenLaw pine_like() { return {27 * kDegree, 40 * kDegree, 10e-3, 0.136, 0.0}; }
 
 // A 0.1 m layer with a 1 cm sine bump flowing on a periodic 1 m ramp at 29.5 deg (Pouliquen
 // friction, flowing branch) for 0.3 s: the thickness on n cells.
 std::vector<double> smooth_flow(std::size_t n) {
   const RampGrid grid{0.0, 1.0, n};
   RampPhysics p;
-  p.angle = 29.5 * kDeg;
+  p.angle = 29.5 * kDegree;
   p.friction = pine_like();
   p.upstream = p.downstream = RampBoundary::Periodic;
   const double u0 = flow_rule_velocity(pine_like(), 0.1, p.angle);
@@ -70,7 +69,7 @@ TEST(RampFlowAccuracy, LargeReleaseLeavesDepositAtStoppingThickness) {
   const RampGrid grid{0.0, 1.0, 100};
   for (const auto& [angle, multiple] : {std::pair{29.5, 3.0}, std::pair{37.0, 5.0}}) {
     RampPhysics p;
-    p.angle = angle * kDeg;
+    p.angle = angle * kDegree;
     p.friction = pine_like();
     const double h_stop = stopping_thickness(pine_like(), p.angle).thickness;
     const auto r = run_ramp_flow(grid, p, std::vector<double>(100, multiple * h_stop), {}, {});
@@ -83,7 +82,7 @@ TEST(RampFlowAccuracy, LargeReleaseLeavesDepositAtStoppingThickness) {
 
 Chute seed_chute() {  // the seed's inclined-plane test (benchmark ChuteL1ReleaseToRest)
   Chute c;
-  c.angle = 29.5 * kDeg;
+  c.angle = 29.5 * kDegree;
   c.width = 0.76;
   c.length = 2.0;
   c.gate_opening = 0.22;
@@ -103,7 +102,7 @@ TEST(RampFlowAccuracy, SeedRampDepositOnDesignerCells) {
   o.cell_size = 0.005;
   const auto fine = run_chute_release(seed_chute(), pine_like(), o);
   ASSERT_TRUE(coarse.stopped && fine.stopped);
-  const double h_stop = stopping_thickness(pine_like(), 29.5 * kDeg).thickness;
+  const double h_stop = stopping_thickness(pine_like(), 29.5 * kDegree).thickness;
   EXPECT_NEAR(coarse.probe_thickness / fine.probe_thickness, 1.0, 0.005);
   EXPECT_NEAR(coarse.probe_thickness / h_stop, 1.0, 0.02);
 }

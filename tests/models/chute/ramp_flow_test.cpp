@@ -4,20 +4,18 @@
 
 #include <cmath>
 #include <tuple>
-#include <numbers>
 
 #include "models/chute/chute_release.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
-
-PouliquenLaw pine_like() { return {27 * kDeg, 40 * kDeg, 10e-3, 0.136, 0.0}; }  // section 3
+PouliquenLaw pine_like() { return {27 * kDegree, 40 * kDegree, 10e-3, 0.136, 0.0}; }  // section 3
 
 Chute small_chute() {  // reduced-size twin of the seed ramp (2 m ramp, 0.57 m bin, 0.5 m fill)
   Chute c;
-  c.angle = 29.5 * kDeg;
+  c.angle = 29.5 * kDegree;
   c.width = 0.76;
   c.length = 1.0;
   c.gate_opening = 0.1;
@@ -51,7 +49,7 @@ TEST(RampFlow, ReleaseConservesMass) {
 TEST(RampFlow, LakeAtRestStaysAtRest) {
   const RampGrid grid{0.0, 1.0, 100};
   RampPhysics p;
-  p.angle = 20 * kDeg;
+  p.angle = 20 * kDegree;
   p.friction = {0.0, 0.0, 1.0, 1.0, 0.0};  // no friction at all
   p.downstream = RampBoundary::Wall;
   std::vector<double> h(grid.cells);
@@ -70,7 +68,7 @@ TEST(RampFlow, LakeAtRestStaysAtRest) {
 TEST(RampFlow, StaticLayerStaysExactlyAtRestAndThickOneFlows) {
   const RampGrid grid{0.0, 0.5, 50};
   RampPhysics p;
-  p.angle = 29.5 * kDeg;
+  p.angle = 29.5 * kDegree;
   p.friction = pine_like();
   p.upstream = p.downstream = RampBoundary::Periodic;
   const double h_stop = stopping_thickness(pine_like(), p.angle).thickness;
@@ -93,7 +91,7 @@ TEST(RampFlow, UniformFlowMatchesFlowRule) {
   p.friction = pine_like();
   p.upstream = p.downstream = RampBoundary::Periodic;
   for (const auto& [angle, h, seconds] : {std::tuple{29.5, 0.1, 20.0}, std::tuple{37.0, 6.3e-3, 2.0}}) {
-    p.angle = angle * kDeg;
+    p.angle = angle * kDegree;
     const auto r = run_ramp_flow(grid, p, std::vector<double>(10, h), {}, timed(seconds));
     const double expected = flow_rule_velocity(pine_like(), h, p.angle);
     EXPECT_NEAR(r.velocity[5] / expected, 1.0, 1e-6) << angle << ": " << r.velocity[5];
@@ -114,7 +112,7 @@ double mid_deposit(double cell_size) {
 // the first-order scheme gave 93 / 68 / 63 mm here.
 TEST(RampFlow, DepositConvergesUnderRefinement) {
   const double h20 = mid_deposit(0.02), h10 = mid_deposit(0.01), h5 = mid_deposit(0.005);
-  const double h_stop = stopping_thickness(pine_like(), 29.5 * kDeg).thickness;
+  const double h_stop = stopping_thickness(pine_like(), 29.5 * kDegree).thickness;
   std::printf("mid-ramp deposit: %.2f / %.2f / %.2f mm at dx = 20 / 10 / 5 mm (h_stop %.2f)\n",
               h20 * 1e3, h10 * 1e3, h5 * 1e3, h_stop * 1e3);
   EXPECT_LT(std::abs(h10 - h5), 0.005 * h5);

@@ -4,19 +4,18 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "models/contact/contact_law.hpp"
 #include "models/contact/hertz_normal.hpp"
 #include "models/contact/hysteretic_nonlinear2.hpp"
 #include "models/core/gravity.hpp"
+#include "models/units/angle.hpp"
 #include "tests/models/contact/single_contact_rig.hpp"
 #include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDt = 1e-6;
 
 DemContactParameters pine_wall() { return testing::pine_table2_particle_wall(); }  // seed Table 2, P-W
@@ -73,14 +72,14 @@ void sticks_below_and_slides_above_the_friction_angle(const char* name) {
   const Law law(pine_wall());
   const double phi = std::atan(0.2);
   const long steps = 300000;  // 0.3 s
-  const InclineRun stick = on_incline(law, phi - 1.5 * kDeg, true, 0.0, steps);
+  const InclineRun stick = on_incline(law, phi - 1.5 * kDegree, true, 0.0, steps);
   const double creep = (stick.x_end - stick.x_mid).x();
   std::printf("%s: below, creep over the last 0.15 s %.2e m, final speed %.2e m/s\n", name,
               creep, stick.v_end.norm());
   EXPECT_LT(std::abs(creep), 1e-8);
   EXPECT_LT(stick.v_end.norm(), 1e-6);
 
-  const double above = phi + 1.5 * kDeg;
+  const double above = phi + 1.5 * kDegree;
   const InclineRun slide = on_incline(law, above, true, 0.0, steps);
   const double a = (slide.v_end - slide.v_mid).x() / (0.5 * steps * kDt);
   const double expected = kGravity * (std::sin(above) - 0.2 * std::cos(above));
@@ -102,7 +101,8 @@ using PineRolling = ContactLaw<HystereticNonlinear2, TangentialHistory<HandedOnS
 // Plain cdt stops a sphere rolling down a 5 deg plate (0.05 m/s to a creep of ~2e-6 m/s) but
 // then chatters: omega_y flips sign every few steps (what the clamped test must not show).
 TEST(Incline, ConstantTorqueStopsTheSphereButChatters) {
-  const InclineRun r = on_incline(PineRolling<RollingCdt>(pine_wall()), 5 * kDeg, false, 0.05, 200000);
+  const InclineRun r =
+      on_incline(PineRolling<RollingCdt>(pine_wall()), 5 * kDegree, false, 0.05, 200000);
   std::printf("cdt: final speed %.2e m/s, omega %.2e rad/s, %ld flips in 10000 steps\n",
               r.v_end.norm(), r.w_end, r.sign_flips);
   EXPECT_LT(r.v_end.norm(), 1e-4);
@@ -115,7 +115,7 @@ TEST(Incline, ConstantTorqueStopsTheSphereButChatters) {
 // step but cannot hold a steady torque at omega = 0 (epsd2 can).
 TEST(Incline, ClampedConstantTorqueSettlesWithoutChatter) {
   const InclineRun r =
-      on_incline(PineRolling<RollingCdtClamped>(pine_wall()), 5 * kDeg, false, 0.05, 200000);
+      on_incline(PineRolling<RollingCdtClamped>(pine_wall()), 5 * kDegree, false, 0.05, 200000);
   std::printf("cdt_clamped: final speed %.2e m/s, omega %.2e rad/s, %ld flips, creep %.2e m\n",
               r.v_end.norm(), r.w_end, r.sign_flips, (r.x_end - r.x_mid).norm());
   EXPECT_LT(r.v_end.norm(), 1e-5);
@@ -125,7 +125,8 @@ TEST(Incline, ClampedConstantTorqueSettlesWithoutChatter) {
 
 // epsd2 (spring torque with a plastic cap) stops the sphere and holds it without chatter.
 TEST(Incline, Epsd2StopsAndHoldsTheSphere) {
-  const InclineRun r = on_incline(PineRolling<RollingEpsd2>(pine_wall()), 5 * kDeg, false, 0.05, 200000);
+  const InclineRun r =
+      on_incline(PineRolling<RollingEpsd2>(pine_wall()), 5 * kDegree, false, 0.05, 200000);
   std::printf("epsd2: final speed %.2e m/s, omega %.2e rad/s, %ld flips, creep %.2e m\n",
               r.v_end.norm(), r.w_end, r.sign_flips, (r.x_end - r.x_mid).norm());
   EXPECT_LT(r.v_end.norm(), 1e-5);
@@ -134,9 +135,9 @@ TEST(Incline, Epsd2StopsAndHoldsTheSphere) {
 
 // Without rolling resistance the same sphere keeps rolling down: a = (5/7) g sin(theta).
 TEST(Incline, WithoutRollingResistanceTheSphereRolls) {
-  const InclineRun r = on_incline(PineSliding(pine_wall()), 5 * kDeg, false, 0.05, 200000);
+  const InclineRun r = on_incline(PineSliding(pine_wall()), 5 * kDegree, false, 0.05, 200000);
   const double a = (r.v_end - r.v_mid).x() / 0.1;
-  EXPECT_NEAR(a / (5.0 / 7.0 * kGravity * std::sin(5 * kDeg)), 1.0, 0.01);
+  EXPECT_NEAR(a / (5.0 / 7.0 * kGravity * std::sin(5 * kDegree)), 1.0, 0.01);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The peer's two-sphere cyclic compression (shared/reference/liggghts-inl): the hysteretic
-// normal laws against the LIGGGHTS-INL gold files, row by row.
+// The peer's two-sphere cyclic compression (tests/data/liggghts-inl, see tests/data/README.md):
+// the hysteretic normal laws against the LIGGGHTS-INL gold files, row by row.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,7 +23,7 @@ struct Row {
 };
 
 std::vector<Row> read_gold(const std::string& name) {
-  std::ifstream file(std::string(FEEDFLOW_SHARED_DIR) + "/reference/liggghts-inl/" + name);
+  std::ifstream file(std::string(FEEDFLOW_TEST_DATA_DIR) + "/liggghts-inl/" + name);
   std::vector<Row> rows;
   std::string line;
   std::getline(file, line);  // header

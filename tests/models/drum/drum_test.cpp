@@ -7,12 +7,10 @@
 
 #include "models/drum/drum_regime.hpp"
 #include "models/drum/rolling_layer.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 Drum seed_drum(double rpm) {
   Drum d;
@@ -72,18 +70,18 @@ TEST(DrumRegime, FullBedCentrifugingCriterion) {
 TEST(DrumRegime, NoSlipWallCriterion) {
   Drum d = seed_drum(20);
   const DrumRegimeThresholds t;
-  EXPECT_FALSE(assess_drum_regime(d, t, 25 * kDeg).wall_slips.has_value());
-  d.wall_friction_angle = 20 * kDeg;
-  const auto holds = assess_drum_regime(d, t, 25 * kDeg);
-  EXPECT_NEAR(holds.no_slip_friction, 4 / (3 * std::numbers::pi) * std::sin(25 * kDeg), 1e-12);
+  EXPECT_FALSE(assess_drum_regime(d, t, 25 * kDegree).wall_slips.has_value());
+  d.wall_friction_angle = 20 * kDegree;
+  const auto holds = assess_drum_regime(d, t, 25 * kDegree);
+  EXPECT_NEAR(holds.no_slip_friction, 4 / (3 * std::numbers::pi) * std::sin(25 * kDegree), 1e-12);
   EXPECT_FALSE(*holds.wall_slips);
-  d.wall_friction_angle = 5 * kDeg;
-  EXPECT_TRUE(*assess_drum_regime(d, t, 25 * kDeg).wall_slips);
+  d.wall_friction_angle = 5 * kDegree;
+  EXPECT_TRUE(*assess_drum_regime(d, t, 25 * kDegree).wall_slips);
 }
 
 RollingLayerModel glass_beads() {
   RollingLayerModel m;
-  m.rheology = {std::tan(20.9 * kDeg), std::tan(32.76 * kDeg), 0.279, 0.5e-3, 0.6};
+  m.rheology = {std::tan(20.9 * kDegree), std::tan(32.76 * kDegree), 0.279, 0.5e-3, 0.6};
   m.layer_fraction = 0.2;
   return m;
 }
@@ -93,7 +91,7 @@ TEST(RollingLayer, GlassBeadExample) {
   const double expected[][2] = {{5, 22.1}, {10, 23.1}, {20, 24.7}, {30, 25.8}};
   for (const auto& [rpm, aor] : expected) {
     const auto s = rolling_angle_of_repose(seed_drum(rpm), glass_beads());
-    EXPECT_NEAR(s.angle_of_repose / kDeg, aor, 0.05) << rpm << " rpm";
+    EXPECT_NEAR(s.angle_of_repose / kDegree, aor, 0.05) << rpm << " rpm";
   }
 }
 
@@ -104,14 +102,14 @@ TEST(RollingLayer, AngleRisesWithSpeedAndEndWalls) {
   for (double rpm = 1; rpm <= 40; rpm += 3) {
     const double a = rolling_angle_of_repose(seed_drum(rpm), glass_beads()).angle_of_repose;
     EXPECT_GT(a, previous) << rpm;
-    EXPECT_LT(a, 32.76 * kDeg);
+    EXPECT_LT(a, 32.76 * kDegree);
     previous = a;
   }
   auto walls = glass_beads();
   walls.end_wall_friction = 0.5;
   const auto plain = rolling_angle_of_repose(seed_drum(20), glass_beads());
   const auto with = rolling_angle_of_repose(seed_drum(20), walls);
-  EXPECT_GT(with.angle_of_repose, plain.angle_of_repose + 0.5 * kDeg);
+  EXPECT_GT(with.angle_of_repose, plain.angle_of_repose + 0.5 * kDegree);
   EXPECT_NEAR(std::tan(with.angle_of_repose),
               friction_coefficient(walls.rheology, with.inertial_number) +
                   0.5 * with.layer_thickness / 0.202, 1e-10);

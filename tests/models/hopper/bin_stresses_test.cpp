@@ -2,22 +2,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "models/hopper/bin_stresses.hpp"
 #include "models/hopper/hopper_slice_stresses.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // T1 (Tardos): round bin, rho_b 1560, g 10, D 1.8 m, phi 24.1, phi_w 20.2 deg, Rankine K:
 // sigma_v,max = 45.9 kPa with K mu rounded to 0.153 (45.4 kPa exact), z_99% = 13.55 m and the
 // wall normal stress 19.1 kPa.
 TEST(HopperBinStresses, T1JanssenRoundBin) {
-  const double k = janssen_stress_ratio(StressRatioRule::rankine_active, 24.1 * kDeg);
-  const double mu = std::tan(20.2 * kDeg);
+  const double k = janssen_stress_ratio(StressRatioRule::rankine_active, 24.1 * kDegree);
+  const double mu = std::tan(20.2 * kDegree);
   EXPECT_NEAR(k * mu, 0.1546, 0.0001);
   const JanssenBin exact{round_bin_hydraulic_radius(1.8), 1560, k, mu, 0.0, 10.0};
   EXPECT_NEAR(janssen_asymptotic_stress(exact), 45.4e3, 50);
@@ -37,11 +35,12 @@ TEST(HopperBinStresses, T1JanssenRoundBin) {
 
 // The stress-ratio options of section 5 and the plane-bin hydraulic radius.
 TEST(HopperBinStresses, StressRatioRulesAndHydraulicRadius) {
-  const double s = std::sin(40 * kDeg);
-  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::jaky, 40 * kDeg), 1 - s);
-  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::en1991_4, 40 * kDeg), 1.1 * (1 - s));
-  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::schulze, 40 * kDeg), 1.2 * (1 - s));
-  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::rankine_active, 40 * kDeg), (1 - s) / (1 + s));
+  const double s = std::sin(40 * kDegree);
+  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::jaky, 40 * kDegree), 1 - s);
+  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::en1991_4, 40 * kDegree), 1.1 * (1 - s));
+  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::schulze, 40 * kDegree), 1.2 * (1 - s));
+  EXPECT_DOUBLE_EQ(janssen_stress_ratio(StressRatioRule::rankine_active, 40 * kDegree),
+                   (1 - s) / (1 + s));
   EXPECT_DOUBLE_EQ(plane_bin_hydraulic_radius(0.6), 0.3);
   EXPECT_DOUBLE_EQ(plane_bin_hydraulic_radius(0.6, 0.6), 0.15);  // square: D/4
 }
@@ -49,10 +48,10 @@ TEST(HopperBinStresses, StressRatioRulesAndHydraulicRadius) {
 // The slice solution satisfies its equation d sigma_v/dh = n sigma_v/h - rho g (central
 // differences, also at n = 1), starts at sigma_vt and becomes radial (sigma_v ~ h) near the apex.
 TEST(HopperSliceStresses, SolvesTheSliceEquation) {
-  const double lambda = passive_hopper_stress_ratio(30 * kDeg, 50 * kDeg, 8.5 * kDeg);
+  const double lambda = passive_hopper_stress_ratio(30 * kDegree, 50 * kDegree, 8.5 * kDegree);
   EXPECT_NEAR(lambda, 1.997, 0.001);
   for (double ratio : {lambda, 0.0}) {
-    HopperSlice s{FlowGeometry::plane, 30 * kDeg, 8.5 * kDeg, ratio, 290, 0.55, 800.0};
+    HopperSlice s{FlowGeometry::plane, 30 * kDegree, 8.5 * kDegree, ratio, 290, 0.55, 800.0};
     if (ratio == 0.0)  // choose lambda_h so that n = 1 exactly
       s.stress_ratio = 2.0 / (1.0 + std::tan(s.wall_friction_angle) / std::tan(s.semi_angle));
     const double n = slice_exponent(s);
@@ -63,7 +62,7 @@ TEST(HopperSliceStresses, SolvesTheSliceEquation) {
       EXPECT_NEAR(slope, n * slice_stress(s, h).vertical / h - 290 * 9.81, 1e-3) << "n " << n;
     }
   }
-  HopperSlice s{FlowGeometry::plane, 30 * kDeg, 8.5 * kDeg, lambda, 290, 0.55, 800.0};
+  HopperSlice s{FlowGeometry::plane, 30 * kDegree, 8.5 * kDegree, lambda, 290, 0.55, 800.0};
   const double n = slice_exponent(s);
   EXPECT_NEAR(n, 1.514, 0.001);
   // Radial limit: sigma_v/h -> rho g/(n-1); at h/h_t = 1.8e-6 within (h/h_t)^(n-1) = 0.1 %.
@@ -76,12 +75,13 @@ TEST(HopperSliceStresses, SolvesTheSliceEquation) {
 TEST(HopperSliceStresses, EmptyingSiloProfile) {
   Hopper h;
   h.shape = "wedge";
-  h.semi_angle = 30 * kDeg;
+  h.semi_angle = 30 * kDegree;
   h.outlet_width = 0.06;
   h.bin_width = 0.62;
   h.fill_height = 0.68 + h.outlet_height();
   h.slot_length = 0.5;
-  const auto p = emptying_silo_profile(h, 290, 50 * kDeg, 8.5 * kDeg, StressRatioRule::schulze, 20);
+  const auto p =
+      emptying_silo_profile(h, 290, 50 * kDegree, 8.5 * kDegree, StressRatioRule::schulze, 20);
   ASSERT_EQ(p.size(), 40u);
   for (std::size_t i = 1; i < p.size(); ++i) EXPECT_LE(p[i].height, p[i - 1].height);
   EXPECT_NEAR(p.front().height, h.fill_height, 1e-12);

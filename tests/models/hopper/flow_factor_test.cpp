@@ -4,15 +4,13 @@
 
 #include <array>
 #include <cmath>
-#include <numbers>
 
 #include "models/hopper/enstad_flow_factor.hpp"
 #include "models/hopper/radial_stress_field.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct TableRow {
   double delta, phi_w;
@@ -36,8 +34,8 @@ TEST(HopperFlowFactor, EnstadPlaneTableEveryCell) {
   for (const auto& row : kPlaneTable)
     for (int i = 0; i < 5; ++i) {
       const double theta = 10.0 * (i + 1);
-      EXPECT_NEAR(enstad_flow_factor(FlowGeometry::plane, theta * kDeg, row.delta * kDeg,
-                                     row.phi_w * kDeg),
+      EXPECT_NEAR(enstad_flow_factor(FlowGeometry::plane, theta * kDegree, row.delta * kDegree,
+                                     row.phi_w * kDegree),
                   row.enstad[i], 0.01)
           << "delta " << row.delta << " phi_w " << row.phi_w << " theta " << theta;
     }
@@ -48,14 +46,13 @@ TEST(HopperFlowFactor, RadialStressFieldPlaneTableEveryCell) {
   for (const auto& row : kPlaneTable)
     for (int i = 0; i < 5; ++i) {
       const double theta = 10.0 * (i + 1);
-      const auto field = solve_radial_stress_field(FlowGeometry::plane, theta * kDeg,
-                                                   row.delta * kDeg, row.phi_w * kDeg);
+      const auto field = solve_radial_stress_field(FlowGeometry::plane, theta * kDegree,
+                                                   row.delta * kDegree, row.phi_w * kDegree);
       ASSERT_TRUE(field.has_value()) << "delta " << row.delta << " theta " << theta;
       EXPECT_NEAR(field->flow_factor, row.rsf[i], 0.01)
           << "delta " << row.delta << " phi_w " << row.phi_w << " theta " << theta;
     }
 }
-
 
 struct PrecisePoint {
   FlowGeometry g;
@@ -76,7 +73,7 @@ constexpr PrecisePoint kPrecisePoints[] = {
 TEST(HopperFlowFactor, RadialStressFieldPrecisePoints) {
   for (const auto& p : kPrecisePoints) {
     const auto field =
-        solve_radial_stress_field(p.g, p.theta * kDeg, p.delta * kDeg, p.phi_w * kDeg);
+        solve_radial_stress_field(p.g, p.theta * kDegree, p.delta * kDegree, p.phi_w * kDegree);
     ASSERT_TRUE(field.has_value()) << to_string(p.g) << " theta " << p.theta;
     EXPECT_NEAR(field->axis_stress, p.s0, 2e-5) << to_string(p.g) << " theta " << p.theta;
     EXPECT_NEAR(field->wall_stress, p.s_w, 2e-5) << to_string(p.g) << " theta " << p.theta;
@@ -86,30 +83,30 @@ TEST(HopperFlowFactor, RadialStressFieldPrecisePoints) {
 
 // The pine-like plane point: Enstad gives 1.3503 where the RSF gives 1.3146 (section 1.2).
 TEST(HopperFlowFactor, EnstadPinePoint) {
-  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::plane, 30 * kDeg, 50 * kDeg, 8.5 * kDeg), 1.3503,
-              2e-4);
+  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::plane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree),
+              1.3503, 2e-4);
 }
 
 // The conical row of the table: (50, 20) at 10 and 20 deg, RSF/Enstad 1.35/1.36 and 1.30/1.29,
 // and no admissible field at 30 deg, beyond the 26.1 deg limit.
 TEST(HopperFlowFactor, ConicalRowAndBeyondTheLimit) {
-  const double d = 50 * kDeg, w = 20 * kDeg;
-  EXPECT_NEAR(solve_radial_stress_field(FlowGeometry::conical, 10 * kDeg, d, w)->flow_factor,
+  const double d = 50 * kDegree, w = 20 * kDegree;
+  EXPECT_NEAR(solve_radial_stress_field(FlowGeometry::conical, 10 * kDegree, d, w)->flow_factor,
               1.35, 0.01);
-  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 10 * kDeg, d, w), 1.36, 0.01);
-  EXPECT_NEAR(solve_radial_stress_field(FlowGeometry::conical, 20 * kDeg, d, w)->flow_factor,
+  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 10 * kDegree, d, w), 1.36, 0.01);
+  EXPECT_NEAR(solve_radial_stress_field(FlowGeometry::conical, 20 * kDegree, d, w)->flow_factor,
               1.30, 0.01);
-  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 20 * kDeg, d, w), 1.29, 0.01);
-  EXPECT_FALSE(solve_radial_stress_field(FlowGeometry::conical, 30 * kDeg, d, w).has_value());
+  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 20 * kDegree, d, w), 1.29, 0.01);
+  EXPECT_FALSE(solve_radial_stress_field(FlowGeometry::conical, 30 * kDegree, d, w).has_value());
 }
 
 // T4: conical delta = 40, phi_w = 16 at 29.5 deg: ff = 1.52 (Enstad) and 1.53 (RSF), against
 // 1.5 read from Jenike's chart.
 TEST(HopperFlowFactor, T4ConicalTutorialCase) {
-  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 29.5 * kDeg, 40 * kDeg, 16 * kDeg), 1.52,
-              0.005);
+  EXPECT_NEAR(enstad_flow_factor(FlowGeometry::conical, 29.5 * kDegree, 40 * kDegree, 16 * kDegree),
+              1.52, 0.005);
   EXPECT_NEAR(
-      solve_radial_stress_field(FlowGeometry::conical, 29.5 * kDeg, 40 * kDeg, 16 * kDeg)
+      solve_radial_stress_field(FlowGeometry::conical, 29.5 * kDegree, 40 * kDegree, 16 * kDegree)
           ->flow_factor,
       1.53, 0.005);
 }
@@ -118,9 +115,9 @@ TEST(HopperFlowFactor, T4ConicalTutorialCase) {
 // path that rises then falls back to psi_w is integrated to the wall, not cut at a crossing.
 TEST(HopperFlowFactor, PlaneMismatchFallsWithAxisStress) {
   double previous = 1e9;
-  for (double s0 = 1e-3; s0 < max_axis_stress(FlowGeometry::plane, 50 * kDeg); s0 *= 1.5) {
-    const double f =
-        radial_field_wall_mismatch(FlowGeometry::plane, 30 * kDeg, 50 * kDeg, 20 * kDeg, s0);
+  for (double s0 = 1e-3; s0 < max_axis_stress(FlowGeometry::plane, 50 * kDegree); s0 *= 1.5) {
+    const double f = radial_field_wall_mismatch(FlowGeometry::plane, 30 * kDegree, 50 * kDegree,
+                                                20 * kDegree, s0);
     EXPECT_LE(f, previous + 1e-12) << "s0 " << s0;
     previous = f;
   }
@@ -131,7 +128,7 @@ TEST(HopperFlowFactor, PlaneMismatchFallsWithAxisStress) {
 // sigma1/(rho g r) -> (1 + sin delta) Y/(X-1), towards the outlet.
 TEST(HopperFlowFactor, EnstadPassiveStressField) {
   const auto g = FlowGeometry::plane;
-  const double t = 30 * kDeg, d = 50 * kDeg, w = 8.5 * kDeg, rho = 290, rg = rho * 9.81;
+  const double t = 30 * kDegree, d = 50 * kDegree, w = 8.5 * kDegree, rho = 290, rg = rho * 9.81;
   const auto [x, y] = enstad_coefficients(g, t, d, w);
   const double k = (1 + std::sin(d)) * y / (x - 1);
   EXPECT_NEAR(enstad_passive_major_stress(g, t, d, w, rho, 0.6, 900.0, 0.6), 900.0, 1e-9);
@@ -154,17 +151,20 @@ TEST(HopperFlowFactor, EnstadPassiveStressField) {
 // spurious root and not an exception.
 TEST(HopperFlowFactor, NoFieldAcrossAGuardJump) {
   EXPECT_FALSE(
-      solve_radial_stress_field(FlowGeometry::conical, 50 * kDeg, 25 * kDeg, 20 * kDeg).has_value());
+      solve_radial_stress_field(FlowGeometry::conical, 50 * kDegree, 25 * kDegree, 20 * kDegree)
+          .has_value());
   EXPECT_TRUE(
-      solve_radial_stress_field(FlowGeometry::conical, 25 * kDeg, 25 * kDeg, 20 * kDeg).has_value());
+      solve_radial_stress_field(FlowGeometry::conical, 25 * kDegree, 25 * kDegree, 20 * kDegree)
+          .has_value());
 }
 
 // A wall rougher than the solid and a semi-angle of 90 deg are refused, not computed.
 TEST(HopperFlowFactor, RejectsImpossibleAngles) {
-  EXPECT_THROW(enstad_flow_factor(FlowGeometry::plane, 30 * kDeg, 40 * kDeg, 45 * kDeg),
+  EXPECT_THROW(enstad_flow_factor(FlowGeometry::plane, 30 * kDegree, 40 * kDegree, 45 * kDegree),
                std::invalid_argument);
-  EXPECT_THROW(solve_radial_stress_field(FlowGeometry::plane, 90 * kDeg, 40 * kDeg, 10 * kDeg),
-               std::invalid_argument);
+  EXPECT_THROW(
+      solve_radial_stress_field(FlowGeometry::plane, 90 * kDegree, 40 * kDegree, 10 * kDegree),
+      std::invalid_argument);
 }
 
 }  // namespace

@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "models/hypoplastic/at_rest_stress_ratio.hpp"
 #include "models/hypoplastic/derived_bulk_properties.hpp"
 #include "models/hypoplastic/element_tests.hpp"
 #include "models/hypoplastic/stress_invariants.hpp"
 #include "models/material/bulk_compressibility.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
@@ -58,8 +58,8 @@ TEST(HypoplasticElementTest, TriaxialCompressionReachesCriticalState) {
   // Dense: peak friction angle above phi_c and dilation; loose: contraction, no peak.
   const auto s_dense = summarize_element_test(kPine, {ElementTestKind::triaxial_compression, 0.51}, dense);
   const auto s_loose = summarize_element_test(kPine, {ElementTestKind::triaxial_compression, 0.51}, loose);
-  EXPECT_GT(s_dense.peak_friction_angle, kPine.parameters.phi_c + 3.0 * std::numbers::pi / 180);
-  EXPECT_LT(s_loose.peak_friction_angle, kPine.parameters.phi_c + 0.2 * std::numbers::pi / 180);
+  EXPECT_GT(s_dense.peak_friction_angle, kPine.parameters.phi_c + 3.0 * kDegree);
+  EXPECT_LT(s_loose.peak_friction_angle, kPine.parameters.phi_c + 0.2 * kDegree);
   EXPECT_LT(s_loose.final_void_ratio, 0.90);
 }
 

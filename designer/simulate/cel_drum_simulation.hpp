@@ -1,9 +1,0 @@
-#pragma once
-// The CEL-FEM verification of a drum case: scene, run and measurements.
-#include "designer/simulate/simulation_request.hpp"
-
-namespace feedflow {
-
-SimulationOutcome simulate_drum_with_cel(const SimulationRequest& request);
-
-}  // namespace feedflow

@@ -1,0 +1,189 @@
+#include "designer/simulate/dem_chute_adapter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "designer/simulate/dem_case_settings.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "fullsim/dem/scene/inclined_plane_scene.hpp"
+#include "models/core/errors.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kDefaultSlab = 0.015;    // [m] the seed's slab, five diameters
+constexpr double kDefaultRunTime = 30.0;  // [s] after the release at most (seed: 18.8 s)
+constexpr double kSampleInterval = 0.02;  // [s]
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
+  const Chute& chute = std::get<Chute>(c.equipment);
+  InclinedPlaneSpec spec;
+  spec.angle = chute.angle;
+  spec.ramp_length = chute.length;
+  spec.bin_length = chute.bin_length;
+  spec.bin_height = chute.bin_height;
+  spec.fill_height = chute.fill_height;
+  spec.gate_opening = chute.gate_opening;
+  spec.slab_depth = c.dem.slab_depth.value_or(kDefaultSlab);
+  if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
+  const double r = settings.material.particle.radius;
+  const double cutoff = 2.0 * r * (1.0 + settings.skin_fraction);
+  if (spec.slab_depth < 2.0 * cutoff)
+    throw InputError(c.file, "dem.slab_depth",
+                     "the periodic slab must be at least two neighbour cutoffs deep (" +
+                         fmt(2.0 * cutoff * 1e3) + " mm for R = " + fmt(r * 1e3) + " mm)");
+  return spec;
+}
+
+class DemChuteAdapter final : public SceneAdapter {
+ public:
+  explicit DemChuteAdapter(const SimulationRequest& request)
+      : request_(request),
+        chute_(std::get<Chute>(request.case_data.equipment)),
+        settings_(dem_case_settings(request.case_data)),
+        scene_(settings_, plane_spec(request.case_data, settings_)) {}
+
+  std::string what() const override { return "the bin"; }
+
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
+    const bool fresh = request_.restart.empty();
+    log << "inclined plane scene plan: periodic slab " << scene_.spec().slab_depth * 1e3 << " mm across the ramp "
+        << "(stands for the " << chute_.width * 1e3 << " mm ramp; no lateral spill), ramp frame with tilted "
+        << "gravity, bin on the ramp's upper end filled by "
+        << (fresh ? scene_.rain().describe() + " (the fill height, normal to the ramp)"
+                  : std::string("rain-fall (restart: the fill is skipped)"))
+        << ", gate plane removed on release with a plate kept above " << chute_.gate_opening * 1e3
+        << " mm, saw-tooth no-slip ramp (mesh), particles leaving the ramp end removed; ends when the kinetic "
+           "energy shows the flow has stopped\n";
+    if (fresh) {
+      if (scene_.fill(log, &progress).interrupted) return nullptr;
+      scene_.open_gate(log);
+      release_ = scene_.engine().time();
+    }
+    return &scene_.engine();
+  }
+
+  std::vector<TimeSeriesColumn> columns() const override {
+    return {{"time", "s"}, {"kinetic_energy", "J"}, {"particles", ""}, {"mass_off_ramp_end", "kg"}, {"front", "m"}};
+  }
+
+  // The release time itself is kept: recomputing it from the step count rounds differently
+  // from the engine's summed time, and the series' time column would drift.
+  void restore(const Hdf5File& f) override { release_ = f.double_attribute("/scene", "release_time"); }
+
+  void plan(SceneRunOptions& run) override {
+    const Case& c = request_.case_data;
+    run.label = "DEM inclined plane";
+    run.origin = run.sample_origin = release_;
+    run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRunTime;
+    run.sample_interval = kSampleInterval;
+    run.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
+    run.sample = [this] {
+      const DemEngine& e = scene_.engine();
+      const OutletSink* sink = e.outlet_sink();
+      return std::vector<double>{e.time() - release_, e.kinetic_energy(), static_cast<double>(e.particles().size()),
+                                 sink ? sink->removed_mass() : 0.0, scene_.deposit().front};
+    };
+    if (!request_.end_time)
+      run.stop = [this](const TimeSeries&) {
+        return scene_.engine().time() - release_ >= 0.2 && scene_.flow_stopped()
+                   ? std::string("the flow has stopped: kinetic energy per particle below 1e-3 m g d")
+                   : std::string();
+      };
+    const double release = release_;
+    run.save_scene = [release](Hdf5File& f) { f.set_attribute("/scene", "release_time", release); };
+    duration_ = run.duration;
+  }
+
+  void measure(const SceneRunResult& run, DesignRecord& record) override {
+    const DepositProfile d = scene_.deposit();
+    const DemEngine& e = scene_.engine();
+    const double r = settings_.material.particle.radius;
+    auto& results = record.results;
+    results.emplace_back("deposit_thickness_mid_ramp",
+                         Estimate{d.mid_ramp.value, "m", d.mid_ramp.low, d.mid_ramp.high,
+                                  "DEM (" + contact_law_name(e.effective_law()) + "): highest particle top per " +
+                                      fmt(2 * r * 1e3) + " mm bin, mean over mid-ramp +-5 % (band: the bins' range)",
+                                  Rung::L3, "mm"});
+    results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
+                                                   "DEM: farthest bin with a particle", Rung::L3, ""});
+    const OutletSink* sink = e.outlet_sink();
+    results.emplace_back("particles_left", Estimate{static_cast<double>(e.particles().size()), "", std::nullopt,
+                                                    std::nullopt, "DEM scene", Rung::L3, ""});
+    results.emplace_back("mass_off_ramp_end_per_width",
+                         Estimate{(sink ? sink->removed_mass() : 0.0) / scene_.spec().slab_depth, "kg/m", std::nullopt,
+                                  std::nullopt, "DEM: slab mass through the ramp end / slab depth", Rung::L3, ""});
+    results.emplace_back("run_wall_time", Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
+                                                   "wall time of the flow phase", Rung::L3, ""});
+    auto& notes = record.verdict.reasons;
+    if (run.end == RunEnd::interrupted) notes.push_back("interrupted: the deposit is the state so far");
+    else if (run.end == RunEnd::duration && !request_.end_time)
+      notes.push_back("the flow had not stopped within " + fmt(duration_) + " s: the deposit is still moving");
+    if (d.front < 0.5 * chute_.length)
+      notes.push_back("the deposit ends at " + fmt(d.front) + " m, before mid-ramp: h_stop at mid-ramp is 0");
+    if (!e.spring_warning().empty()) notes.push_back(e.spring_warning());
+  }
+
+  std::vector<std::string> reduced_model_quantities() const override {
+    return {"stopping_thickness", "deposit_thickness_mid_ramp"};
+  }
+
+  void explain(const SceneRunResult&, DesignRecord& record) override {
+    const DepositProfile d = scene_.deposit();
+    Chart profile{"deposit_profile_dem", "Deposit along the ramp once flow stops (DEM)", {"distance from the gate", "m"},
+                  {"deposit height", "mm"}, {}, ""};
+    ChartSeries h{"DEM: highest particle top", SeriesStyle::line, {}, {}, {}};
+    for (std::size_t b = 0; b < d.x.size(); ++b) {
+      h.x.push_back(d.x[b]);
+      h.y.push_back(d.height[b] * 1e3);
+    }
+    profile.series.push_back(h);
+    if (const Estimate* e = find_estimate(record.results, reduced_model_key("stopping_thickness")); e && e->is_number())
+      profile.series.push_back({"h_stop (reduced model)", SeriesStyle::dashed, {0.0, chute_.length},
+                                {std::get<double>(e->value) * 1e3, std::get<double>(e->value) * 1e3}, {}});
+    profile.note = "as the seed's DEM measured it: the highest particle along the ramp";
+    record.charts.push_back(std::move(profile));
+
+    const DemEngine& e = scene_.engine();
+    const double r = scene_.settings().material.particle.radius;
+    const double slab = scene_.spec().slab_depth;
+    auto& a = record.assumptions;
+    a.push_back("DEM inclined plane: spheres of R = " + fmt(r * 1e3) + " mm, Table 2 parameters, law " +
+                contact_law_name(e.effective_law()) + ", time step " + fmt(e.time_step() * 1e6) + " us");
+    a.push_back("periodic slab " + fmt(slab * 1e3) + " mm deep standing for the " + fmt(chute_.width * 1e3) +
+                " mm ramp (masses scale by " + fmt(chute_.width / slab) + "); no side walls or lateral spill");
+    a.push_back("the bin stands on the upper end of the ramp with its walls normal to it (the seed gives no drawing)");
+    a.push_back("no-slip ramp as a saw-tooth mesh (45 deg faces, period 2R, height R) standing for the glued chips; "
+                "the deposit height is measured above the teeth's crests");
+    a.push_back(request_.restart.empty()
+                    ? "filling by " + scene_.rain().describe() + " (the fill height), against the closed gate: " +
+                          scene_.fill_report().summary()
+                    : std::string("filling by rain-fall against the closed gate, settled and trimmed to the fill "
+                                  "height (done by the run the checkpoint continues)"));
+  }
+
+ private:
+  const SimulationRequest& request_;
+  const Chute& chute_;
+  DemSettings settings_;
+  InclinedPlaneScene scene_;
+  double release_ = 0.0;
+  double duration_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneAdapter> dem_chute_adapter(const SimulationRequest& request) {
+  return std::make_unique<DemChuteAdapter>(request);
+}
+
+}  // namespace feedflow

@@ -1,0 +1,236 @@
+#include "designer/simulate/dem_drum_adapter.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "designer/simulate/dem_case_settings.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "fullsim/dem/scene/drum_angle_watch.hpp"
+#include "fullsim/dem/scene/drum_scene.hpp"
+#include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kDefaultRotation = 10.0;  // [s] of rotation at most (the seed's 10 s)
+constexpr double kSampleInterval = 0.02;   // [s]
+
+std::string fmt(double v, int digits = 3) {
+  std::ostringstream s;
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+// A slab has no turning end plates to help carry the bed: its shell takes the case's wall
+// friction (the seed FEM's slab value) instead of Table 2's P-W 0.2, with which the bed slips.
+double shell_friction(const Drum& drum) {
+  return drum.wall_friction_angle ? std::tan(*drum.wall_friction_angle) : 0.364;
+}
+
+DemSettings drum_settings(const Case& c) {
+  DemSettings s = dem_case_settings(c);
+  if (c.dem.slab_depth) s.material.particle_wall.friction = shell_friction(std::get<Drum>(c.equipment));
+  return s;
+}
+
+DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
+  const Drum& drum = std::get<Drum>(c.equipment);
+  DrumSceneSpec spec;
+  spec.diameter = drum.diameter;
+  spec.length = drum.length;
+  spec.fill_fraction = drum.fill_fraction;
+  spec.speed = drum.speed;
+  spec.slab_depth = c.dem.slab_depth;
+  if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
+  const double r = settings.material.particle.radius;
+  const double cutoff = 2.0 * r * (1.0 + settings.skin_fraction);
+  if (spec.slab_depth && *spec.slab_depth < 2.0 * cutoff)
+    throw InputError(c.file, "dem.slab_depth",
+                     "the periodic slab must be at least two neighbour cutoffs deep (" +
+                         fmt(2.0 * cutoff * 1e3) + " mm for R = " + fmt(r * 1e3) + " mm)");
+  return spec;
+}
+
+DrumAngleWatch angle_watch(const Drum& drum) {
+  const double period = drum.speed > 0.0 ? 2.0 * std::numbers::pi / drum.speed : 1e9;
+  return DrumAngleWatch(0.5 * drum.diameter, std::max(0.5, 0.15 * period), std::max(0.5, 0.1 * period),
+                        1.0 * kDegree);
+}
+
+class DemDrumAdapter final : public SceneAdapter {
+ public:
+  explicit DemDrumAdapter(const SimulationRequest& request)
+      : request_(request),
+        drum_(std::get<Drum>(request.case_data.equipment)),
+        settings_(drum_settings(request.case_data)),
+        scene_(settings_, drum_spec(request.case_data, settings_)),
+        watch_(angle_watch(drum_)) {}
+
+  std::string what() const override { return "the drum"; }
+
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
+    const bool fresh = request_.restart.empty();
+    const auto& spec = scene_.spec();
+    log << "drum scene plan: "
+        << (spec.slab_depth ? "periodic axial slab " + fmt(*spec.slab_depth * 1e3) + " mm deep (no end walls; stands for the " +
+                                  fmt(drum_.length * 1e3) + " mm drum)"
+                            : "full 3D drum with turning end plates")
+        << ", D = " << drum_.diameter * 1e3 << " mm, fill " << drum_.fill_fraction * 100 << " %, "
+        << drum_.speed * 30.0 / std::numbers::pi << " rpm; analytic cylinder shell; filled by "
+        << (fresh ? scene_.rain().describe() + " (the fill line)" : std::string("rain-fall (restart: the fill is skipped)"))
+        << "; the shell starts after settling; ends when the angle has converged\n";
+    if (fresh) {
+      if (scene_.fill(log, &progress).interrupted) return nullptr;
+      scene_.start_rotation(log);
+    }
+    return &scene_.engine();
+  }
+
+  std::vector<TimeSeriesColumn> columns() const override {
+    return {{"time", "s"},             {"dynamic_angle_of_repose", "deg"}, {"surface_fit_valid", ""},
+            {"airborne_fraction", ""}, {"over_top_fraction", ""},          {"solid_body_fraction", ""},
+            {"shell_speed_ratio", ""}, {"kinetic_energy", "J"}};
+  }
+
+  void restore(const Hdf5File& f) override {
+    scene_.set_rotation_start(f.double_attribute("/scene", "rotation_start"));
+  }
+
+  void plan(SceneRunOptions& run) override {
+    for (const auto& row : run.previous.rows()) {  // a restarted run's samples (without the profile)
+      DrumSample s;
+      s.time = row[0];
+      s.angle = row[1] * kDegree;
+      s.valid = row[2] > 0.5;
+      s.state = {0.0, 0.0, row[3], row[4], row[5], row[6]};
+      watch_.add(s);
+    }
+    const Case& c = request_.case_data;
+    run.label = "DEM drum";
+    run.origin = run.sample_origin = scene_.rotation_start();
+    run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRotation;
+    run.sample_interval = kSampleInterval;
+    run.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
+    run.sample = [this] {
+      const DrumSample s = scene_.sample();
+      watch_.add(s);
+      return std::vector<double>{s.time, s.angle / kDegree, s.valid ? 1.0 : 0.0, s.state.airborne_fraction,
+                                 s.state.over_top_fraction, s.state.solid_body_fraction,
+                                 s.state.shell_speed_ratio, s.kinetic_energy};
+    };
+    if (!request_.end_time)  // a given --time is run to its end
+      run.stop = [this](const TimeSeries&) {
+        return watch_.converged() ? std::string("converged: the mean angle of the last two windows differs by "
+                                                "less than 1 deg")
+                                  : std::string();
+      };
+    const double rotation_start = scene_.rotation_start();
+    run.save_scene = [rotation_start](Hdf5File& f) { f.set_attribute("/scene", "rotation_start", rotation_start); };
+    duration_ = run.duration;
+  }
+
+  void measure(const SceneRunResult& run, DesignRecord& record) override {
+    const auto steady = watch_.steady();
+    const std::string law = contact_law_name(scene_.engine().effective_law());
+    const bool measured = steady && steady->samples > 0;
+    auto& results = record.results;
+    if (measured && steady->angle != 0.0)
+      results.emplace_back("dynamic_angle_of_repose",
+                           Estimate{steady->angle / kDegree, "deg", steady->low / kDegree, steady->high / kDegree,
+                                    "DEM (" + law + "): mid-chord line of the free surface, mean over the steady "
+                                    "window (band: 2 SD of the sampled angle)", Rung::L3, ""});
+    DrumRegimeCall regime;
+    if (measured) regime = classify_drum_bed(steady->state);
+    results.emplace_back(
+        "regime", Estimate{measured ? std::string(to_string(regime.regime)) : std::string("not measured"), "",
+                           std::nullopt, std::nullopt,
+                           measured ? "DEM: measured bed state (" + regime.reason + ")"
+                                    : "DEM: the run ended within the spin-up of " + fmt(watch_.spin_up()) + " s",
+                           Rung::L3, ""});
+    results.emplace_back("particles", Estimate{static_cast<double>(scene_.engine().particles().size()), "",
+                                               std::nullopt, std::nullopt, "DEM scene", Rung::L3, ""});
+    if (steady)
+      results.emplace_back("steady_window", Estimate{steady->to - steady->from, "s", steady->from, steady->to,
+                                                     "rotation time averaged (from-to after the start)", Rung::L3, ""});
+    results.emplace_back("run_wall_time", Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
+                                                   "wall time of the rotation phase", Rung::L3, ""});
+    auto& notes = record.verdict.reasons;
+    if (run.end == RunEnd::interrupted) notes.push_back("interrupted: the result covers the run so far");
+    if (!measured)
+      notes.push_back("the run ended within the spin-up (" + fmt(watch_.spin_up()) + " s of rotation): no steady "
+                      "angle or regime; run longer than " + fmt(watch_.spin_up() + 2 * watch_.window()) + " s");
+    if (run.end == RunEnd::duration && !request_.end_time)
+      notes.push_back("the angle had not converged within " + fmt(duration_) + " s of rotation");
+    if (request_.restart.empty() && scene_.trimmed() == 0)
+      notes.push_back("the settled packing fell short of the fill line: the bed is below the asked fill");
+    if (!scene_.engine().spring_warning().empty()) notes.push_back(scene_.engine().spring_warning());
+  }
+
+  std::vector<std::string> reduced_model_quantities() const override {
+    return {"dynamic_angle_of_repose", "regime"};
+  }
+
+  void explain(const SceneRunResult&, DesignRecord& record) override {
+    const auto steady = watch_.steady();
+    Chart chart{"drum_angle_vs_time", "Dynamic angle of repose against time (DEM)",
+                {"time since the shell started", "s"}, {"dynamic angle of repose", "deg"}, {}, ""};
+    ChartSeries line{"DEM surface fit", SeriesStyle::line, {}, {}, {}};
+    for (const auto& s : watch_.samples())
+      if (s.valid) {
+        line.x.push_back(s.time);
+        line.y.push_back(s.angle / kDegree);
+      }
+    chart.series.push_back(line);
+    if (steady && steady->angle != 0.0)
+      chart.series.push_back({"steady mean with 2 SD band", SeriesStyle::band, {steady->from, steady->to},
+                              {steady->low / kDegree, steady->low / kDegree}, {steady->high / kDegree, steady->high / kDegree}});
+    if (const Estimate* e = find_estimate(record.results, reduced_model_key("dynamic_angle_of_repose")); e && e->is_number() && !line.x.empty())
+      chart.series.push_back({"reduced model (feedflow design)", SeriesStyle::dashed, {0.0, line.x.back()},
+                              {std::get<double>(e->value), std::get<double>(e->value)}, {}});
+    chart.note = "the angle is the mid-chord slope of the surface; the band is 2 SD of the snapshots in the steady window";
+    record.charts.push_back(std::move(chart));
+
+    const auto& spec = scene_.spec();
+    const double r = settings_.material.particle.radius;
+    auto& a = record.assumptions;
+    a.push_back("DEM drum: " + fmt(static_cast<double>(scene_.engine().particles().size()), 6) + " spheres of R = " +
+                fmt(r * 1e3) + " mm, Table 2 parameters, law " + contact_law_name(scene_.engine().effective_law()) +
+                ", time step " + fmt(scene_.engine().time_step() * 1e6) + " us");
+    if (spec.slab_depth) {
+      a.push_back("periodic axial slab " + fmt(*spec.slab_depth * 1e3) + " mm deep standing for the " +
+                  fmt(drum_.length * 1e3) + " mm drum (masses scale by " + fmt(drum_.length / *spec.slab_depth) +
+                  "): no end-wall friction, so the angle errs low (Jop et al. 2005: tan beta rises by mu_w delta/W)");
+      a.push_back("slab shell friction " + fmt(shell_friction(drum_)) + " (the case's wall friction angle) instead of "
+                  "Table 2's P-W 0.2: without the turning end plates the bed slips on a 0.2 shell "
+                  "(no slip needs mu_w > (r_g/R) sin beta, about 0.24 here)");
+    } else {
+      a.push_back("full 3D drum with Table 2 P-W friction 0.2 on the shell and on the end plates turning with it");
+    }
+    a.push_back(request_.restart.empty()
+                    ? "filling by " + scene_.rain().describe() + " (the fill line): " + scene_.fill_report().summary()
+                    : std::string("filling by rain-fall, settled and trimmed to the fill line (done by the run the "
+                                  "checkpoint continues)"));
+    a.push_back("regime from the measured bed state (particles in flight, solid-body fraction, over-the-top "
+                "fraction, surface bend, angle swing, shell slip; thresholds in fullsim/dem/scene/drum_bed_regime.hpp)");
+  }
+
+ private:
+  const SimulationRequest& request_;
+  const Drum& drum_;
+  DemSettings settings_;
+  DrumScene scene_;
+  DrumAngleWatch watch_;
+  double duration_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneAdapter> dem_drum_adapter(const SimulationRequest& request) {
+  return std::make_unique<DemDrumAdapter>(request);
+}
+
+}  // namespace feedflow

@@ -1,0 +1,15 @@
+#pragma once
+// The rotating drum on the particle rung (L3): a periodic axial slab (or the full 3D drum with
+// turning end plates) rain-filled to the fill line and settled, then the shell turning; sampled
+// every 20 ms (the surface angle, the bed state); stopped once the mean angle of the last two
+// windows agrees within 1 deg (unless --time is given); measured: the dynamic angle of repose
+// with a 2 SD band and the regime from the measured bed state.
+#include <memory>
+
+#include "designer/simulate/scene_adapter.hpp"
+
+namespace feedflow {
+
+std::unique_ptr<SceneAdapter> dem_drum_adapter(const SimulationRequest& request);
+
+}  // namespace feedflow

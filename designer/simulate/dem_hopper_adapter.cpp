@@ -1,0 +1,250 @@
+#include "designer/simulate/dem_hopper_adapter.hpp"
+
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include "designer/simulate/dem_hopper_scene.hpp"
+#include "designer/simulate/hopper_discharge.hpp"
+#include "designer/simulate/reduced_model_beside.hpp"
+#include "fullsim/dem/scene/flow_order.hpp"
+#include "fullsim/dem/scene/speed_profile.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kSampleInterval = 0.01;  // [s] time-series rows
+enum Column { kTime, kAfterOpening, kDischarged, kParticles, kMassInDomain, kKineticEnergy };
+
+std::string format(const char* fmt, auto... args) {
+  char buf[500];
+  std::snprintf(buf, sizeof buf, fmt, args...);
+  return buf;
+}
+
+HopperDischarge::Rows rows_of(const TimeSeries& s) {
+  return discharge_rows(s, kAfterOpening, kDischarged, kMassInDomain, kKineticEnergy);
+}
+
+Estimate number(double v, const std::string& unit, std::optional<double> lo, std::optional<double> hi,
+                const std::string& model) {
+  return Estimate{v, unit, lo, hi, model, Rung::L3, ""};
+}
+Estimate label(const std::string& text, const std::string& model) {
+  return Estimate{text, "", std::nullopt, std::nullopt, model, Rung::L3, ""};
+}
+
+class DemHopperAdapter final : public SceneAdapter {
+ public:
+  explicit DemHopperAdapter(const SimulationRequest& request)
+      : request_(request), scene_(hopper_scene_from_case(request.case_data)) {
+    // The rows' time axis is the time after the opening.
+    discharge_.trickle_rate = discharge_.arch.trickle_share * scene_.slab.depth *
+                              outlet_scale_rate(request.case_data.material.bulk.density, scene_.slab.outlet_width);
+  }
+
+  std::string what() const override { return "the hopper"; }
+
+  Stepper* build(std::ostream& log, ProgressSink& progress) override {
+    describe_hopper_scene(scene_, log);
+    engine_.emplace(hopper_scene_structure(scene_));
+    if (!request_.restart.empty()) return &*engine_;
+    return fill_hopper_scene(scene_, *engine_, &progress, log) ? &*engine_ : nullptr;
+  }
+
+  std::vector<TimeSeriesColumn> columns() const override {
+    return {{"time", "s"},          {"time_after_opening", "s"}, {"discharged_mass", "kg"},
+            {"particles_in_domain", ""}, {"mass_in_domain", "kg"},    {"kinetic_energy", "J"}};
+  }
+
+  void restore(const Hdf5File& f) override {
+    restore_hopper_scene(scene_, f);
+    flow_line_.restore(f, "/scene/flow_line");
+  }
+
+  // The fill at the opening (a restored run: as saved).
+  double fill_mass() const { return scene_.fill.inserted_mass - scene_.fill.trimmed_mass - scene_.fill.sunk_mass; }
+
+  void plan(SceneRunOptions& run) override {
+    run.label = "DEM hopper";
+    run.origin = run.sample_origin = scene_.opening_time;
+    run.duration = request_.end_time.value_or(scene_.default_duration);
+    run.sample_interval = kSampleInterval;
+    run.snapshot_interval = scene_.snapshot_interval;
+    run.sample = [this] {
+      const DemEngine& e = *engine_;
+      const double t_open = scene_.opening_time;
+      double out = 0.0;
+      for (const auto& ev : e.outlet_sink()->events())
+        if (ev.time > t_open) out += ev.mass;
+      flow_line_.add(e.time() - t_open, flow_line());
+      return std::vector<double>{e.time(), e.time() - t_open, out, static_cast<double>(e.particles().size()),
+                                 e.particles().total_mass(), e.kinetic_energy()};
+    };
+    discharge_.fill_mass = fill_mass();
+    if (!request_.end_time)  // a given --time is run to its end
+      run.stop = [this](const TimeSeries& s) { return discharge_.stop_reason(rows_of(s)); };
+    run.save_scene = [this](Hdf5File& f) {
+      save_hopper_scene(scene_, f);
+      flow_line_.save(f, "/scene/flow_line");
+    };
+  }
+
+  void measure(const SceneRunResult& run, DesignRecord& record) override {
+    const double scale = scene_.depth_scale();
+    const HopperDischarge::Rows rows = rows_of(run.series);
+    const SteadyRate rate = discharge_.steady_rate(rows);
+    const DischargeState state = discharge_.state(rows);
+    const OutletSink& sink = *engine_->outlet_sink();
+    const double t_open = scene_.opening_time;
+    log_mass_book();
+    const bool arched = state == DischargeState::arched;
+    const double discharged = sink.removed_mass() - scene_.fill.sunk_mass;
+    auto& results = record.results;
+    if (arched) {  // an arch ends the flow: no steady rate, whatever dribbled out before it
+      const double last = sink.events().empty() ? t_open : sink.events().back().time;
+      results.emplace_back("mass_flow_rate",
+                           number(0.0, "kg/s", 0.0, 0.0,
+                                  slab_model() + format("; arched: %.4g kg (scaled) left before the last exit at "
+                                                        "%.3g s after the opening",
+                                                        discharged * scale, std::max(0.0, last - t_open))));
+    } else if (rate.found) {
+      results.emplace_back("mass_flow_rate", number(rate.rate * scale, "kg/s", rate.low * scale, rate.high * scale,
+                                                    slab_model() + "; steady window " + rate.describe()));
+      results.emplace_back("mass_flow_rate_slab", number(rate.rate, "kg/s", rate.low, rate.high,
+                                                         "DEM slab as simulated (before the depth scaling)"));
+    } else {
+      record.verdict.reasons.push_back("no steady discharge window yet: run longer (--time)");
+    }
+    results.emplace_back("arching", label(to_string(state), "DEM; " + discharge_.describe()));
+    // Flow pattern from the speeds across the converging section at mid-height, over the steady
+    // window (the whole run without one).
+    const WallSpeedRatio ratio = rate.found ? flow_line_.ratio(rate.window_start, rate.window_end)
+                                            : flow_line_.ratio(0.0, std::numeric_limits<double>::infinity());
+    if (!arched && ratio.measured) {
+      results.emplace_back("flow_pattern", label(ratio.label(), "DEM; " + describe_flow_pattern()));
+      results.emplace_back("wall_to_centre_speed_ratio",
+                           Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
+                                    "particle speeds at mid-height of the converging section, averaged over the "
+                                    "steady window", Rung::L3, ""});
+    }
+    const FlowOrder order = layer_order();
+    results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
+                                                format("layer bands: pairs from different bands leaving in band order "
+                                                       "(%d bands; %s by F >= %.2f)",
+                                                       scene_.bands, order.label().c_str(), kMassFlowFifoIndex),
+                                                Rung::L3, ""});
+    results.emplace_back("discharged_mass", number(discharged * scale, "kg", std::nullopt, std::nullopt, slab_model()));
+    results.emplace_back("simulated_time_after_opening",
+                         number(engine_->time() - t_open, "s", std::nullopt, std::nullopt,
+                                run.end == RunEnd::stopped ? run.stop_reason : "the run's duration"));
+    if (!engine_->spring_warning().empty()) record.verdict.reasons.push_back(engine_->spring_warning());
+  }
+
+  std::vector<std::string> reduced_model_quantities() const override {
+    return {"mass_flow_rate", "critical_outlet_width", "flow_pattern"};
+  }
+
+  void explain(const SceneRunResult& run, DesignRecord& record) override {
+    const double scale = scene_.depth_scale();
+    Chart chart{"dem_discharged_mass_vs_time", "Cumulative discharged mass against time (DEM)",
+                {"time after opening", "s"}, {"discharged mass", "kg"}, {}, ""};
+    ChartSeries dem{"DEM slab x " + format("%.4g", scale), SeriesStyle::line, {}, {}, {}, -1};
+    for (const auto& r : run.series.rows()) {
+      dem.x.push_back(r[kAfterOpening]);
+      dem.y.push_back(r[kDischarged] * scale);
+    }
+    chart.series.push_back(dem);
+    const SteadyRate rate = discharge_.steady_rate(rows_of(run.series));
+    if (const Estimate* q = find_estimate(record.results, reduced_model_key("mass_flow_rate")); q && q->is_number() && !dem.x.empty()) {
+      const double qr = std::get<double>(q->value);
+      const double t0 = rate.found ? rate.window_start : 0.0;
+      double m0 = 0.0;
+      for (std::size_t k = 0; k < dem.x.size() && dem.x[k] <= t0; ++k) m0 = dem.y[k];
+      chart.series.push_back({"reduced model, steady", SeriesStyle::dashed, {t0, dem.x.back()},
+                              {m0, m0 + qr * (dem.x.back() - t0)}, {}, -1});
+    }
+    chart.note = "DEM masses scaled from the slab to the slot length (x " + format("%.4g", scale) + ")";
+    record.charts.push_back(chart);
+
+    auto& a = record.assumptions;
+    a.push_back("quasi-2D slab instead of the 3D hopper: " + format("%.3g", scene_.slab.depth * 1e3) +
+                " mm deep, masses scaled by the slot length / slab depth; a one-layer slab is a disc "
+                "packing, which the seed used too (it over-predicted q_m slightly)");
+    a.push_back("walls: a finite triangle-mesh wedge and analytic bin planes with the particle-wall "
+                "Table 2 set; the outlet is opened by removing the gate plane once the fill has "
+                "settled (the rig slides its side walls up)");
+    a.push_back("filling: rain-fall following the fill top, settled to 1 mm/s or 0.5 s, trimmed at "
+                "H; particles are deleted 5 R below the outlet (their mass is booked)");
+    a.push_back("the run ends when the steady rate's 95 % interval is within +-5 %, the hopper "
+                "arches or empties, or the duration runs out: " +
+                (run.end == RunEnd::stopped ? run.stop_reason : std::string("duration")));
+    a.push_back("flow pattern as on every rung: " + describe_flow_pattern() + "; the layer bands' first-in-"
+                "first-out index is reported beside it");
+    if (!scene_.settings.law.normal.is<HystereticNonlinear2>())
+      a.push_back("normal contact law " + contact_law_name(scene_.settings.law) +
+                  " instead of the seed's hysteretic one ([dem] normal_law)");
+    if (!scene_.fill.settled) a.push_back("the fill had not settled below 1 mm/s when the gate opened");
+  }
+
+ private:
+  // The order of the bands: of the particles in the order they left, and of those left in
+  // the hopper.
+  FlowOrder layer_order() const {
+    std::map<std::uint32_t, int> band_of;
+    for (std::size_t k = 0; k < scene_.initial_ids.size(); ++k)
+      band_of[scene_.initial_ids[k]] = static_cast<int>(scene_.initial_layers[k]);
+    std::vector<int> out_bands, left_bands;
+    for (const auto& ev : engine_->outlet_sink()->events())
+      if (ev.time > scene_.opening_time && band_of.count(ev.id)) out_bands.push_back(band_of[ev.id]);
+    for (std::uint32_t id : engine_->particles().id)
+      if (band_of.count(id)) left_bands.push_back(band_of[id]);
+    return flow_order(out_bands, left_bands);
+  }
+
+  // The particle speeds along the flow-pattern line now.
+  SpeedProfile flow_line() const {
+    const double r = scene_.slab.radius;
+    return speed_profile(engine_->particles(), 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
+  }
+
+  std::string describe_flow_pattern() const {
+    const double r = scene_.slab.radius;
+    return format("mass flow when the speed beside the wall is above %.2g of the centre line's, at mid-height of "
+                  "the converging section over the steady window (z = %.3g m; particles within %.3g mm of it, "
+                  "bins of %.3g mm)",
+                  kMassFlowSpeedRatio, 0.5 * scene_.slab.bin_bottom(), 2e3 * r, 2e3 * r);
+  }
+
+  std::string slab_model() const {
+    return format("DEM slab %.3g mm deep (rung L3), scaled x %.4g (slot length %.4g m / slab depth)",
+                  scene_.slab.depth * 1e3, scene_.depth_scale(), scene_.slot_length);
+  }
+
+  void log_mass_book() const {
+    if (!request_.log) return;
+    const OutletSink& sink = *engine_->outlet_sink();
+    const double in_domain = engine_->particles().total_mass();
+    const double booked = in_domain + sink.removed_mass() + scene_.fill.trimmed_mass;
+    *request_.log << format("mass book: inserted %.9g kg = in the domain %.9g kg + through the sink %.9g kg + "
+                            "trimmed %.9g kg (difference %.3g kg)\n",
+                            scene_.fill.inserted_mass, in_domain, sink.removed_mass(), scene_.fill.trimmed_mass,
+                            booked - scene_.fill.inserted_mass);
+  }
+
+  const SimulationRequest& request_;
+  DemHopperScene scene_;
+  std::optional<DemEngine> engine_;
+  HopperDischarge discharge_;
+  SpeedProfileSeries flow_line_;  // sampled on the rows' time axis (after the opening)
+};
+
+}  // namespace
+
+std::unique_ptr<SceneAdapter> dem_hopper_adapter(const SimulationRequest& request) {
+  return std::make_unique<DemHopperAdapter>(request);
+}
+
+}  // namespace feedflow

@@ -1,9 +1,0 @@
-#pragma once
-// The DEM verification of a hopper case: scene, run and measurements.
-#include "designer/simulate/simulation_request.hpp"
-
-namespace feedflow {
-
-SimulationOutcome simulate_hopper_with_dem(const SimulationRequest& request);
-
-}  // namespace feedflow

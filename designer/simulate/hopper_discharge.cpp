@@ -1,0 +1,70 @@
+#include "designer/simulate/hopper_discharge.hpp"
+
+#include <cstdio>
+
+namespace feedflow {
+namespace {
+
+constexpr double kConvergedHalfWidth = 0.05;  // the rate's interval within +-5 % ends the run
+constexpr std::size_t kConvergedBatches = 10;
+
+SteadyRateSettings rate_settings() {
+  SteadyRateSettings r;
+  r.batch_duration = 0.05;
+  r.min_batches = 5;
+  return r;
+}
+
+}  // namespace
+
+HopperDischarge::Rows discharge_rows(const TimeSeries& series, std::size_t time, std::size_t discharged,
+                                     std::size_t mass_left, std::size_t kinetic_energy) {
+  HopperDischarge::Rows r;
+  for (const auto& row : series.rows()) {
+    r.time.push_back(row[time]);
+    r.discharged.push_back(row[discharged]);
+  }
+  if (!series.empty()) {
+    r.mass_left = series.rows().back()[mass_left];
+    r.kinetic_energy = series.rows().back()[kinetic_energy];
+  }
+  return r;
+}
+
+SteadyRate HopperDischarge::steady_rate(const Rows& rows) const {
+  return steady_discharge_rate(rows.time, rows.discharged, opening, rate_settings());
+}
+
+DischargeState HopperDischarge::state(const Rows& rows) const {
+  if (rows.time.empty()) return DischargeState::flowing;
+  const double last = last_discharge_time(rows.time, rows.discharged, opening, trickle_rate);
+  return discharge_state(rows.time.back(), last, rows.kinetic_energy, rows.mass_left,
+                         fill_mass > 0.0 ? rows.mass_left / fill_mass : 1.0, arch);
+}
+
+std::string HopperDischarge::stop_reason(const Rows& rows) const {
+  const DischargeState s = state(rows);
+  char text[300];
+  if (s == DischargeState::arched) {
+    std::snprintf(text, sizeof text,
+                  "arched: less than %.3g kg/s out for %.3g s and the kinetic energy below that of the "
+                  "fill moving at %.3g m/s", trickle_rate, arch.quiet_time, arch.speed);
+    return text;
+  }
+  if (s == DischargeState::emptied) return "the hopper has emptied";
+  const SteadyRate r = steady_rate(rows);
+  if (r.found && r.batches >= kConvergedBatches && r.high - r.low < 2.0 * kConvergedHalfWidth * r.rate)
+    return "converged: the steady rate's 95 % interval is within +-5 %";
+  return "";
+}
+
+std::string HopperDischarge::describe() const {
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "arched when less than %.3g kg/s (%.3g of rho_b W sqrt(g W)) leaves for %.3g s and the kinetic "
+                "energy is below 1/2 M (%.3g m/s)^2; emptied below %.3g of the fill",
+                trickle_rate, arch.trickle_share, arch.quiet_time, arch.speed, arch.empty_fraction);
+  return text;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,51 @@
+#pragma once
+// Mass or funnel flow of a hopper measured the same way on every rung: the speeds along a
+// horizontal line across the converging section at mid-height (the CEL's node speeds, the
+// DEM's particle speeds averaged in bins) from the centre line to the wall, sampled through
+// the run and averaged over the steady discharge window. Mass flow when the material at the
+// wall moves at more than a tenth of the centre line's speed (the whole content moves); funnel
+// flow when it stands (a stagnant zone along the wall).
+#include <string>
+#include <vector>
+
+#include "fullsim/common/hdf5_file.hpp"
+
+namespace feedflow {
+
+// Speeds along the line, ordered from the centre line outwards.
+struct SpeedProfile {
+  std::vector<double> offset;  // distance from the centre line [m], ascending
+  std::vector<double> speed;   // [m/s]
+};
+
+inline constexpr double kMassFlowSpeedRatio = 0.1;
+
+struct WallSpeedRatio {
+  double ratio = 0.0;          // wall speed / centre speed
+  bool measured = false;       // material on the line and a moving centre
+  std::string label() const { return ratio > kMassFlowSpeedRatio ? "mass" : "funnel"; }
+};
+
+// The speed of the outermost point over that of the innermost.
+WallSpeedRatio wall_to_centre_speed_ratio(const SpeedProfile& line);
+
+// The line sampled through a run: the ratio of its time-averaged profile over a window (each
+// offset's mean speed over the samples that had material there; the outermost offset is the
+// farthest one that had material in at least half of the window's samples, so a surface
+// passing below the line late in the run does not count).
+class SpeedProfileSeries {
+ public:
+  void add(double time, const SpeedProfile& line);
+  WallSpeedRatio ratio(double from, double to) const;
+  std::size_t size() const { return time_.size(); }
+  // Into and from `group` of a checkpoint (a restarted run averages over the whole run).
+  void save(Hdf5File& file, const std::string& group) const;
+  void restore(const Hdf5File& file, const std::string& group);
+
+ private:
+  std::vector<double> time_;
+  std::vector<std::size_t> first_;  // of each sample's points in offset_/speed_
+  std::vector<double> offset_, speed_;
+};
+
+}  // namespace feedflow

@@ -1,0 +1,45 @@
+#include "models/hopper/bulk_density_models.hpp"
+
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+using Compressibility = std::optional<BulkCompressibility>;
+
+HopperDensity constant(const Material& m, const Compressibility&) {
+  return {BulkDensity::constant(m.bulk.density), "constant design bulk density"};
+}
+
+HopperDensity table(const Material& m, const Compressibility&) {
+  if (m.flow->density.empty())
+    throw InputError("--model", "hopper.bulk_density",
+                     "table chosen, but material " + m.name + " has no density_major_stress/density table in "
+                     "[flow_properties]");
+  return {BulkDensity::tabulated(m.flow->density_major_stress, m.flow->density),
+          "measured compressibility table rho_b(sigma1)"};
+}
+
+// Without hypoplastic parameters: the measured table, else the design density.
+HopperDensity compressible(const Material& m, const Compressibility& c) {
+  if (c)
+    return {BulkDensity::compressible(*c),
+            "critical-state density from the Bauer compression law (hypoplastic parameters)"};
+  return m.flow->density.empty() ? constant(m, c) : table(m, c);
+}
+
+constexpr HopperDensityModel kRows[] = {
+    {{"compressible", Rung::L0,
+      "rho_b at the local stress, Bauer law (without hypoplastic parameters: the table, else constant)"},
+     &compressible},
+    {{"table", Rung::L0, "the measured compressibility table rho_b(sigma1) of [flow_properties]"}, &table},
+    {{"constant", Rung::L0, "the constant design bulk density"}, &constant},
+};
+
+constexpr ModelTable<HopperDensityModel> kTable{"hopper.bulk_density", "bulk density", kRows};
+
+}  // namespace
+
+const ModelTable<HopperDensityModel>& hopper_density_models() { return kTable; }
+
+}  // namespace feedflow

@@ -1,0 +1,60 @@
+#include "models/hopper/hopper_material.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+#include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
+
+namespace feedflow {
+namespace {
+}
+
+HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& density) {
+  if (!m.flow)
+    throw InputError(m.origin, "material.flow_properties",
+                     "the hopper models need the material's flow function and effective angle "
+                     "of internal friction ([flow_properties]); material " + m.name + " has none");
+  HopperMaterial hm;
+  hm.flow = *m.flow;
+  const auto compressibility = BulkCompressibility::of(m);
+  if (compressibility) hm.particle_density = compressibility->solid_density();
+  HopperDensity chosen = density.evaluate(m, compressibility);
+  hm.density = std::move(chosen.density);
+  hm.density_model = std::move(chosen.model);
+  if (m.psd) {
+    hm.median_size = m.psd->d50;
+    hm.largest_size = m.psd->d90;
+  }
+  return hm;
+}
+
+std::vector<MaterialVariant> material_variants(const HopperMaterial& m, double phi_w, bool corners_only) {
+  const auto& f = m.flow;
+  std::vector<MaterialVariant> out{{f.effective_friction_angle, phi_w, 1.0}};
+  const double steps[] = {-1.0, 0.0, 1.0};
+  for (double a : steps)
+    for (double b : steps)
+      for (double c : steps) {
+        if (a == 0 && b == 0 && c == 0) continue;
+        if (corners_only && (a == 0 || b == 0 || c == 0)) continue;
+        const double delta = std::clamp(f.effective_friction_angle + a * f.effective_friction_uncertainty,
+                                        1.0 * kDegree, 89.0 * kDegree);
+        // The wall cannot be rougher than the material's internal friction.
+        const double wall = std::clamp(phi_w + b * f.wall_friction_uncertainty, 0.0, delta - 0.5 * kDegree);
+        out.push_back({delta, wall, std::max(0.0, 1.0 + c * f.ff_uncertainty)});
+      }
+  return out;
+}
+
+FlowFunction scaled_flow_function(const FlowProperties& p, double k) {
+  if (p.flow_function == "power_law") return FlowFunction::power_law(p.ff_coefficient * k, p.ff_exponent);
+  if (p.flow_function == "tabulated") {
+    std::vector<double> strength = p.ff_strength;
+    for (double& s : strength) s *= k;
+    return FlowFunction::tabulated(p.ff_major_stress, strength);
+  }
+  return FlowFunction::linear(std::min(p.ff_slope * k, 0.999), p.ff_intercept * k);
+}
+
+}  // namespace feedflow

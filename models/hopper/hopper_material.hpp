@@ -1,0 +1,43 @@
+#pragma once
+// What the hopper models take from a material, and the box of its uncertainty: the nominal
+// values and the corners of delta, phi_w and the flow function's strength, each at -, 0, + its
+// uncertainty. The design check evaluates the hopper at every corner; the charts sweep them.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "models/hopper/bulk_density_models.hpp"
+#include "models/hopper/flow_function.hpp"
+#include "models/material/material.hpp"
+
+namespace feedflow {
+
+struct HopperMaterial {
+  FlowProperties flow;
+  BulkDensity density = BulkDensity::constant(1.0);
+  std::string density_model;                 // for the report
+  std::optional<double> median_size;         // d50 [m]
+  std::optional<double> largest_size;        // d90, taken as d_max [m]
+  std::optional<double> particle_density;    // envelope density, for the air-drag correction
+
+  // Throws InputError when the material lacks the [flow_properties] section.
+  static HopperMaterial of(const Material& m,
+                           const HopperDensityModel& density = hopper_density_models().default_row());
+};
+
+// One corner of the uncertainty box.
+struct MaterialVariant {
+  double effective_friction_angle;  // delta [rad]
+  double wall_friction_angle;       // phi_w [rad]
+  double strength_scale;            // multiplies sigma_c
+};
+
+// The nominal variant first, then the corners (each value at -, 0, + its uncertainty; only the
+// 8 corners with every value off its nominal when corners_only).
+std::vector<MaterialVariant> material_variants(const HopperMaterial& m, double wall_friction_angle,
+                                               bool corners_only = false);
+
+// The material's flow function with sigma_c scaled by `scale`.
+FlowFunction scaled_flow_function(const FlowProperties& p, double scale);
+
+}  // namespace feedflow

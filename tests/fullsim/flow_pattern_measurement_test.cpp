@@ -1,0 +1,63 @@
+// The flow-pattern line every rung measures (fullsim/common/flow_pattern_measurement.hpp).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <limits>
+
+#include "fullsim/common/flow_pattern_measurement.hpp"
+
+namespace feedflow {
+namespace {
+
+// A profile from the centre (1 m/s) out to the wall moving at `wall` m/s, `points` long.
+SpeedProfile line(double wall, int points) {
+  SpeedProfile p;
+  for (int k = 0; k < points; ++k) {
+    p.offset.push_back(0.01 * k);
+    p.speed.push_back(1.0 + (wall - 1.0) * k / (points - 1.0));
+  }
+  return p;
+}
+
+// Mass flow when the wall moves at more than a tenth of the centre; funnel flow when it stands;
+// an empty line or a centre at rest measures nothing.
+TEST(FlowPatternMeasurement, WallToCentreSpeedRatio) {
+  EXPECT_EQ(wall_to_centre_speed_ratio(line(0.5, 5)).label(), "mass");
+  EXPECT_EQ(wall_to_centre_speed_ratio(line(0.02, 5)).label(), "funnel");
+  EXPECT_NEAR(wall_to_centre_speed_ratio(line(0.5, 5)).ratio, 0.5, 1e-15);
+  EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{}).measured);
+  EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{{0.0, 0.1}, {0.0, 0.3}}).measured);
+}
+
+// Averaged over the window's samples, offset by offset; an outer point that had material in
+// fewer than half of the samples (the surface sinking below the line at the end) does not count,
+// and the series survives a checkpoint.
+TEST(FlowPatternMeasurement, SeriesAveragesOverTheWindow) {
+  SpeedProfileSeries s;
+  s.add(0.0, line(0.9, 5));   // before the window
+  s.add(1.0, line(0.4, 5));
+  s.add(1.1, line(0.6, 5));
+  s.add(1.2, line(0.5, 6));   // one sample reaches a sixth point (speed 0.5)
+  s.add(1.3, line(0.5, 5));
+  const WallSpeedRatio r = s.ratio(1.0, 1.3);
+  ASSERT_TRUE(r.measured);
+  // The fifth point (0.04 m): 0.4, 0.6, 0.6 (k = 4 of 6 at 0.5 wall: 1 - 0.5 x 4/5), 0.5.
+  EXPECT_NEAR(r.ratio, (0.4 + 0.6 + 0.6 + 0.5) / 4.0, 1e-12);
+  const auto file = std::filesystem::temp_directory_path() / ("feedflow_flowline_" + std::to_string(::getpid()) + ".h5");
+  {
+    Hdf5File f(file, Hdf5File::Mode::create);
+    s.save(f, "/scene/flow_line");
+    f.close();
+  }
+  SpeedProfileSeries back;
+  back.restore(Hdf5File(file, Hdf5File::Mode::read), "/scene/flow_line");
+  std::filesystem::remove(file);
+  EXPECT_EQ(back.size(), 5u);
+  EXPECT_EQ(back.ratio(1.0, 1.3).ratio, r.ratio);
+  EXPECT_EQ(back.ratio(0.0, std::numeric_limits<double>::infinity()).ratio,
+            s.ratio(0.0, std::numeric_limits<double>::infinity()).ratio);
+}
+
+}  // namespace
+}  // namespace feedflow
