@@ -53,7 +53,7 @@ void save_restart_identity(const std::vector<InputValue>& identity, Hdf5File& f)
 
 void check_restart_identity(const std::vector<InputValue>& identity, const Hdf5File& f) {
   if (!f.exists(kGroup))
-    throw InputError("--restart", "", f.path().string() + " does not say which case it was written for (a "
+    throw InputError("--restart", "", f.path().string() + " does not say which case it was written for (damaged, a "
                                                           "checkpoint of another program or an older feedflow)");
   std::vector<std::string> saved;
   const std::string keys = f.string_attribute(kGroup, "keys");

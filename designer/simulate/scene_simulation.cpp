@@ -19,8 +19,9 @@ void restoring(const SimulationRequest& request, F&& f) {
     f();
   } catch (const InputError&) {
     throw;
-  } catch (const std::runtime_error& e) {
-    throw InputError("--restart", "", request.restart.string() + ": " + e.what());
+  } catch (const std::exception& e) {  // a damaged file can also give absurd sizes (length, bad_alloc)
+    throw InputError("--restart", "", request.restart.string() + " is damaged or not a checkpoint of this scene: " +
+                                          e.what());
   }
 }
 

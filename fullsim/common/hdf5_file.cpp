@@ -55,7 +55,11 @@ Hdf5File::Hdf5File(std::filesystem::path path, Mode mode) : path_(std::move(path
   }
   std::error_code ec;
   if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path(), ec);
-  file_ = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // The 1.10 file format: object headers, B-trees and the superblock carry checksums, so a damaged
+  // file is an error when read, not silently different data (ParaView 5.x reads this format).
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_V110, H5F_LIBVER_V110);
+  file_ = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
   if (file_ < 0) fail("cannot create");
 }
 
@@ -143,12 +147,18 @@ void Hdf5File::write_raw(const std::string& dataset, std::int64_t memory_type, c
   if (!space.ok()) fail("cannot describe dataset " + dataset + " of " + dims_text(dims));
   Handle links(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
   H5Pset_create_intermediate_group(links.get(), 1);
-  Handle set(H5Dcreate2(file_, dataset.c_str(), memory_type, space.get(), links.get(),
-                        H5P_DEFAULT, H5P_DEFAULT),
-             H5Dclose);
-  if (!set.ok()) fail("cannot create dataset " + dataset);
   std::size_t count = 1;
   for (std::size_t d : dims) count *= d;
+  // Every non-empty array is one chunk with a Fletcher-32 checksum: a damaged value fails the read.
+  Handle creation(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (count > 0 && !h.empty()) {
+    H5Pset_chunk(creation.get(), static_cast<int>(h.size()), h.data());
+    H5Pset_fletcher32(creation.get());
+  }
+  Handle set(H5Dcreate2(file_, dataset.c_str(), memory_type, space.get(), links.get(), creation.get(),
+                        H5P_DEFAULT),
+             H5Dclose);
+  if (!set.ok()) fail("cannot create dataset " + dataset);
   if (count > 0 &&
       H5Dwrite(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
     fail("cannot write dataset " + dataset);
@@ -190,7 +200,7 @@ void Hdf5File::read_raw(const std::string& dataset, std::int64_t memory_type, in
   Handle type(H5Dget_type(set.get()), H5Tclose);
   if (H5Tget_class(type.get()) != type_class) fail("dataset " + dataset + " has another type");
   if (count > 0 && H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-    fail("cannot read dataset " + dataset);
+    fail("cannot read dataset " + dataset + " (damaged: its checksum does not match?)");
   (void)expected_dims;
 }
 

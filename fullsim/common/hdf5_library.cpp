@@ -36,6 +36,8 @@ hid_t H5T_NATIVE_UINT64_g = -1;
 hid_t H5T_NATIVE_INT64_g = -1;
 hid_t H5T_C_S1_g = -1;
 hid_t H5P_CLS_LINK_CREATE_ID_g = -1;
+hid_t H5P_CLS_FILE_ACCESS_ID_g = -1;
+hid_t H5P_CLS_DATASET_CREATE_ID_g = -1;
 
 extern "C" herr_t H5open(void) {
   static const IdVariable kVariables[] = {
@@ -46,6 +48,8 @@ extern "C" herr_t H5open(void) {
       {&H5T_NATIVE_INT64_g, "H5T_NATIVE_INT64_g"},
       {&H5T_C_S1_g, "H5T_C_S1_g"},
       {&H5P_CLS_LINK_CREATE_ID_g, "H5P_CLS_LINK_CREATE_ID_g"},
+      {&H5P_CLS_FILE_ACCESS_ID_g, "H5P_CLS_FILE_ACCESS_ID_g"},
+      {&H5P_CLS_DATASET_CREATE_ID_g, "H5P_CLS_DATASET_CREATE_ID_g"},
   };
   static const auto open = reinterpret_cast<decltype(&::H5open)>(hdf5_library().symbol("H5open"));
   static const auto library_ids = [] {
@@ -122,6 +126,11 @@ FEEDFLOW_FORWARD(hdf5_library(), hid_t, H5Oopen, (hid_t loc_id, const char* name
                  (loc_id, name, lapl_id))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pclose, (hid_t plist_id), (plist_id))
 FEEDFLOW_FORWARD(hdf5_library(), hid_t, H5Pcreate, (hid_t cls_id), (cls_id))
+FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_chunk, (hid_t plist_id, int ndims, const hsize_t dim[]),
+                 (plist_id, ndims, dim))
+FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_fletcher32, (hid_t plist_id), (plist_id))
+FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_libver_bounds,
+                 (hid_t plist_id, H5F_libver_t low, H5F_libver_t high), (plist_id, low, high))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_create_intermediate_group,
                  (hid_t plist_id, unsigned crt_intmd), (plist_id, crt_intmd))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Sclose, (hid_t space_id), (space_id))

@@ -4,6 +4,7 @@
 // checkpoint written, the reduced-model values beside the DEM ones.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <tuple>
 
 #include <algorithm>
@@ -106,6 +107,41 @@ TEST_F(SimulateDem, RestartOfAnotherCaseIsRefused) {
     EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
     EXPECT_NE(r.err.find(was), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir_ / "second" / "results.json"));
+  }
+}
+
+// A damaged checkpoint is never restarted silently: 8 kB zeroed anywhere in it either stops the
+// restart as bad input naming --restart (exit 2, nothing written) or touched no byte the run
+// reads (the same series as the undamaged restart); a file that is not a checkpoint is refused.
+TEST_F(SimulateDem, DamagedOrForeignCheckpointIsRefused) {
+  const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin +
+                          " --set dem.snapshot_interval=0.05s";
+  ASSERT_EQ(run_feedflow(run + " --time 0.05s --out first", dir_).exit_code, 0);
+  const std::string good = slurp(dir_ / "first" / "checkpoint.h5");
+  ASSERT_EQ(run_feedflow(run + " --time 0.06s --restart first/checkpoint.h5 --out clean", dir_).exit_code, 0);
+  const std::string clean = slurp(dir_ / "clean" / "timeseries.csv");
+  int refused = 0;
+  for (int k = 0; k < 8; ++k) {
+    std::string damaged = good;
+    const std::size_t at = damaged.size() * k / 8;
+    std::fill_n(damaged.begin() + at, std::min<std::size_t>(8192, damaged.size() - at), '\0');
+    std::ofstream(dir_ / "damaged.h5", std::ios::binary) << damaged;
+    fs::remove_all(dir_ / "second");
+    const auto r = run_feedflow(run + " --time 0.06s --restart damaged.h5 --out second", dir_);
+    if (r.exit_code == 2) {
+      ++refused;
+      EXPECT_NE(r.err.find("--restart"), std::string::npos) << r.err;
+      EXPECT_FALSE(fs::exists(dir_ / "second" / "results.json")) << "offset " << at;
+    } else {
+      ASSERT_EQ(r.exit_code, 0) << "offset " << at << ": " << r.err;
+      EXPECT_EQ(slurp(dir_ / "second" / "timeseries.csv"), clean) << "offset " << at << " changed the run silently";
+    }
+  }
+  EXPECT_GE(refused, 4);  // most of the file is checksummed particle and contact data
+  for (const char* foreign : {"first/particles.h5", "first/results.json"}) {
+    const auto r = run_feedflow(run + " --time 0.06s --restart " + std::string(foreign) + " --out third", dir_);
+    EXPECT_EQ(r.exit_code, 2) << foreign << ": " << r.err;
+    EXPECT_NE(r.err.find("--restart"), std::string::npos) << r.err;
   }
 }
 
