@@ -1,7 +1,7 @@
 #pragma once
-// What `feedflow simulate` asks of a full simulation, and what one gives back. The solvers'
-// front ends (dem_simulation.hpp, cel_simulation.hpp) build a scene from the case, run it and
-// measure the design quantities; the command writes the files.
+// What `feedflow simulate` asks of a full simulation, and what one gives back. simulate()
+// (simulation.hpp) picks the equipment's scene adapter for the rung, which builds the scene from
+// the case, runs it and measures the design quantities; the command writes the files.
 #include <filesystem>
 #include <optional>
 #include <ostream>

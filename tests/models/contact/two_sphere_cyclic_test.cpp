@@ -36,7 +36,7 @@ std::vector<Row> read_gold(const std::string& name) {
   return rows;
 }
 
-DemContactParameters inl_example() {  // README "The test, in words"
+DemContactParameters inl_example() {  // tests/data/README.md "The LIGGGHTS-INL deck, in words"
   DemContactParameters p;
   p.alpha_prime = 20;
   p.chi = 2;
