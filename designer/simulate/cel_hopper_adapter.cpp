@@ -74,42 +74,17 @@ class CelHopperAdapter final : public CelSceneAdapter {
     add_throughput(record);
     if (!reached_event(record)) return;
     const cel::CelSolver& s = run().solver();
-    const HopperDischarge d = discharge(result.series);
-    const HopperDischarge::Rows rows = rows_of(result.series);
-    const SteadyRate q = d.steady_rate(rows);
-    const DischargeState state = d.state(rows);
-    const bool arched = state == DischargeState::arched;
     const double t_event = run().event_time();
     const double f = run().scene().section_depth_factor;
     const std::string& label = model_label();
+    const DischargeWording w{Rung::L2, 1.0, label + ", " + section_text() + ", x slot length " + format_quantity(slot_, "m", 3),
+                             " (times from the start of the run)", "; arched", label, label, "node speeds", t_event};
+    const SteadyRate q = add_discharge_results(discharge(result.series), rows_of(result.series), flow_line_, w, record);
     auto& results = record.results;
-    if (arched) {
-      results.emplace_back("mass_flow_rate", Estimate{0.0, "kg/s", 0.0, 0.0, label + "; arched", Rung::L2, ""});
-    } else if (q.found) {
-      results.emplace_back("mass_flow_rate", Estimate{q.rate, "kg/s", q.low, q.high,
-                                                      label + ", " + section_text() + ", x slot length " +
-                                                          format_quantity(slot_, "m", 3) + "; steady window " +
-                                                          q.describe() + " (times from the start of the run)",
-                                                      Rung::L2, ""});
+    if (q.found)
       results.emplace_back("mass_flow_rate_per_metre",
                            Estimate{q.rate / slot_, "kg/s/m", q.low / slot_, q.high / slot_, label + ", " + section_text(),
                                     Rung::L2, ""});
-    } else {
-      record.verdict.reasons.push_back("no steady discharge window yet: run longer (--time)");
-    }
-    results.emplace_back("arching", Estimate{to_string(state), "", std::nullopt, std::nullopt, label + "; " + d.describe(),
-                                             Rung::L2, ""});
-    // Flow pattern from the velocity field at mid-height of the converging section, over the
-    // steady window (the whole run after the opening without one).
-    const WallSpeedRatio ratio = q.found ? flow_line_.ratio(q.window_start, q.window_end)
-                                         : flow_line_.ratio(t_event, std::numeric_limits<double>::infinity());
-    if (!arched && ratio.measured) {
-      results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt, label, Rung::L2, ""});
-      results.emplace_back("wall_to_centre_speed_ratio",
-                           Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
-                                    "node speeds at mid-height of the converging section, averaged over the steady "
-                                    "window", Rung::L2, ""});
-    }
     results.emplace_back("discharged_mass", Estimate{f * s.discharge().total() * slot_, "kg", std::nullopt,
                                                      std::nullopt, label + ", " + section_text() + ", x slot length",
                                                      Rung::L2, ""});

@@ -32,9 +32,6 @@ Estimate number(double v, const std::string& unit, std::optional<double> lo, std
                 const std::string& model) {
   return Estimate{v, unit, lo, hi, model, Rung::L3, ""};
 }
-Estimate label(const std::string& text, const std::string& model) {
-  return Estimate{text, "", std::nullopt, std::nullopt, model, Rung::L3, ""};
-}
 
 class DemHopperAdapter final : public SceneAdapter {
  public:
@@ -94,42 +91,20 @@ class DemHopperAdapter final : public SceneAdapter {
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
     const double scale = scene_.depth_scale();
-    const HopperDischarge::Rows rows = rows_of(run.series);
-    const SteadyRate rate = discharge_.steady_rate(rows);
-    const DischargeState state = discharge_.state(rows);
     const OutletSink& sink = *engine_->outlet_sink();
     const double t_open = scene_.opening_time;
     log_mass_book();
-    const bool arched = state == DischargeState::arched;
     const double discharged = sink.removed_mass() - scene_.fill.sunk_mass;
+    const double last = sink.events().empty() ? t_open : sink.events().back().time;
+    DischargeWording w{Rung::L3, scale, slab_model(), "",
+                       format("; arched: %.4g kg (scaled) left before the last exit at %.3g s after the opening",
+                              discharged * scale, std::max(0.0, last - t_open)),
+                       "DEM", "DEM; " + describe_flow_pattern(), "particle speeds", 0.0};
+    const SteadyRate rate = add_discharge_results(discharge_, rows_of(run.series), flow_line_, w, record);
     auto& results = record.results;
-    if (arched) {  // an arch ends the flow: no steady rate, whatever dribbled out before it
-      const double last = sink.events().empty() ? t_open : sink.events().back().time;
-      results.emplace_back("mass_flow_rate",
-                           number(0.0, "kg/s", 0.0, 0.0,
-                                  slab_model() + format("; arched: %.4g kg (scaled) left before the last exit at "
-                                                        "%.3g s after the opening",
-                                                        discharged * scale, std::max(0.0, last - t_open))));
-    } else if (rate.found) {
-      results.emplace_back("mass_flow_rate", number(rate.rate * scale, "kg/s", rate.low * scale, rate.high * scale,
-                                                    slab_model() + "; steady window " + rate.describe()));
+    if (rate.found)
       results.emplace_back("mass_flow_rate_slab", number(rate.rate, "kg/s", rate.low, rate.high,
                                                          "DEM slab as simulated (before the depth scaling)"));
-    } else {
-      record.verdict.reasons.push_back("no steady discharge window yet: run longer (--time)");
-    }
-    results.emplace_back("arching", label(to_string(state), "DEM; " + discharge_.describe()));
-    // Flow pattern from the speeds across the converging section at mid-height, over the steady
-    // window (the whole run without one).
-    const WallSpeedRatio ratio = rate.found ? flow_line_.ratio(rate.window_start, rate.window_end)
-                                            : flow_line_.ratio(0.0, std::numeric_limits<double>::infinity());
-    if (!arched && ratio.measured) {
-      results.emplace_back("flow_pattern", label(ratio.label(), "DEM; " + describe_flow_pattern()));
-      results.emplace_back("wall_to_centre_speed_ratio",
-                           Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
-                                    "particle speeds at mid-height of the converging section, averaged over the "
-                                    "steady window", Rung::L3, ""});
-    }
     const FlowOrder order = layer_order();
     results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
                                                 format("layer bands: pairs from different bands leaving in band order "

@@ -1,6 +1,7 @@
 #include "designer/simulate/hopper_discharge.hpp"
 
 #include <cstdio>
+#include <limits>
 
 namespace feedflow {
 namespace {
@@ -65,6 +66,37 @@ std::string HopperDischarge::describe() const {
                 "energy is below 1/2 M (%.3g m/s)^2; emptied below %.3g of the fill",
                 trickle_rate, arch.trickle_share, arch.quiet_time, arch.speed, arch.empty_fraction);
   return text;
+}
+
+SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge::Rows& rows,
+                                 const SpeedProfileSeries& flow_line, const DischargeWording& w,
+                                 DesignRecord& record) {
+  const SteadyRate rate = d.steady_rate(rows);
+  const DischargeState state = d.state(rows);
+  const bool arched = state == DischargeState::arched;
+  auto& results = record.results;
+  if (arched)  // an arch ends the flow: no steady rate, whatever dribbled out before it
+    results.emplace_back("mass_flow_rate", Estimate{0.0, "kg/s", 0.0, 0.0, w.rate_source + w.arched_detail, w.rung, ""});
+  else if (rate.found)
+    results.emplace_back("mass_flow_rate", Estimate{rate.rate * w.scale, "kg/s", rate.low * w.scale, rate.high * w.scale,
+                                                    w.rate_source + "; steady window " + rate.describe() + w.steady_detail,
+                                                    w.rung, ""});
+  else
+    record.verdict.reasons.push_back("no steady discharge window yet: run longer (--time)");
+  results.emplace_back("arching", Estimate{to_string(state), "", std::nullopt, std::nullopt, w.model + "; " + d.describe(),
+                                           w.rung, ""});
+  // The flow pattern from the speeds across the converging section at mid-height, over the
+  // steady window (the whole run without one).
+  const WallSpeedRatio ratio = rate.found ? flow_line.ratio(rate.window_start, rate.window_end)
+                                          : flow_line.ratio(w.pattern_from, std::numeric_limits<double>::infinity());
+  if (!arched && ratio.measured) {
+    results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt, w.pattern_source, w.rung, ""});
+    results.emplace_back("wall_to_centre_speed_ratio",
+                         Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
+                                  w.speeds + " at mid-height of the converging section, averaged over the steady window",
+                                  w.rung, ""});
+  }
+  return arched ? SteadyRate{} : rate;
 }
 
 }  // namespace feedflow

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "fullsim/common/discharge_measurement.hpp"
+#include "fullsim/common/flow_pattern_measurement.hpp"
+#include "models/core/design_record.hpp"
 #include "models/core/time_series.hpp"
 
 namespace feedflow {
@@ -39,5 +41,26 @@ struct HopperDischarge {
 // energy.
 HopperDischarge::Rows discharge_rows(const TimeSeries& series, std::size_t time, std::size_t discharged,
                                     std::size_t mass_left, std::size_t kinetic_energy);
+
+// How one rung words and scales the discharge results.
+struct DischargeWording {
+  Rung rung = Rung::L3;
+  double scale = 1.0;          // simulated section -> the whole hopper
+  std::string rate_source;     // the rate's source, before "; steady window ..." or the arch
+  std::string steady_detail;   // appended to the steady rate's source after the window
+  std::string arched_detail;   // appended to the zero rate's source when arched
+  std::string model;           // the arching source, before "; " and the rule
+  std::string pattern_source;  // the flow pattern's source
+  std::string speeds;          // what the flow line samples ("particle speeds", "node speeds")
+  double pattern_from = 0.0;   // [s] the flow line's average starts here without a steady window
+};
+
+// The discharge results of a hopper run, the same on every rung: mass_flow_rate (0 when
+// arched, else the steady rate scaled to the hopper, else a note to run longer), arching, and
+// unless arched the flow pattern with the wall-to-centre speed ratio over the steady window.
+// Returns the steady rate (in the simulated section) for the rung's own extra rows.
+SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge::Rows& rows,
+                                 const SpeedProfileSeries& flow_line, const DischargeWording& w,
+                                 DesignRecord& record);
 
 }  // namespace feedflow
