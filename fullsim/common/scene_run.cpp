@@ -113,7 +113,13 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   const bool restarted = !o.restart.empty();
 
   const double sample_every = stepper.whole_steps(o.sample_interval, StepRounding::nearest);
-  const double run_for = stepper.whole_steps(o.duration, StepRounding::up);
+  // Every sample inside the asked duration is taken: a sample interval rounded up to whole steps
+  // can put the last one past the duration's last step, so the run then ends on that sample.
+  const double in_samples = o.sample_interval > 0.0 ? std::round(o.duration / o.sample_interval) : 0.0;
+  const bool whole_samples = in_samples > 0.0 && std::abs(o.duration / o.sample_interval - in_samples) < 1e-9 * in_samples;
+  const double last_sample = whole_samples ? in_samples * sample_every : 0.0;
+  const double on_grid = stepper.whole_steps(o.duration, StepRounding::up);
+  const double run_for = last_sample > on_grid * (1.0 + 1e-9) ? last_sample : on_grid;  // not for round-off
   const double snapshot_every =
       o.snapshot_interval > 0.0 ? stepper.whole_steps(o.snapshot_interval, StepRounding::nearest) : 0.0;
   const auto origin = [&] { return o.origin ? o.origin : stepper.event_started_at(); };

@@ -31,11 +31,13 @@ fs::path scratch(const std::string& name) {
 }
 
 // 64 frictional spheres settling in a closed box whose floor slides sideways.
-DemEngine settling_block() {
+DemEngine settling_block(double time_step = 0.0) {
   ParticleStore p;
   add_lattice(p, Vec3(2e-3, 2e-3, 1.6e-3), 4, 4, 4, 2.95e-3, 0.05);
   const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.02);
-  DemEngine e(hertz_settings(0.5, 0.5, 0.1), SimulationBox{lower, upper, {false, false, false}}, p);
+  DemSettings settings = hertz_settings(0.5, 0.5, 0.1);
+  settings.requested_time_step = time_step;
+  DemEngine e(settings, SimulationBox{lower, upper, {false, false, false}}, p);
   e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
   e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
   e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
@@ -125,6 +127,20 @@ TEST(SceneRun, SamplesOnTheStepGridAndStopsWhenAsked) {
   EXPECT_EQ(r.end, RunEnd::stopped);
   EXPECT_EQ(r.stop_reason, "five rows");
   EXPECT_EQ(r.series.rows().size(), 5u);
+  fs::remove_all(dir);
+}
+
+// A user step that does not divide the sample interval rounds the interval up to whole steps;
+// every sample inside the asked duration is still taken (20 rows after the origin for 20 ms at
+// 1 ms), the last one on the step that ends the run.
+TEST(SceneRun, UserStepKeepsTheLastSample) {
+  const fs::path dir = scratch("user_step");
+  DemEngine e = settling_block(1e-3 / 100.6);  // 1 ms is 100.6 steps: rounds to 101
+  SceneRunOptions o = block_options(e, dir, 0.02);
+  const SceneRunResult r = run_scene(e, o);
+  ASSERT_EQ(r.series.rows().size(), 21u);
+  EXPECT_NEAR(r.series.rows().back()[0], 20 * 101 * e.time_step(), 1e-3 * e.time_step());
+  EXPECT_EQ(e.steps(), 20 * 101);
   fs::remove_all(dir);
 }
 

@@ -65,5 +65,24 @@ TEST(TimeStepChoice, StableByDefaultSmallerWarnsLargerRefusedUnlessForced) {
   EXPECT_NE(forced.warning.find("FORCED"), std::string::npos);
 }
 
+// The stable step as printed (4 significant digits) and typed back is taken as the stable step
+// itself, the same bits as the default run; a step beyond the printed rounding is still refused,
+// and the refusal gives advice a user can follow.
+TEST(TimeStepChoice, PrintedStableStepTypedBackIsTheStableStep) {
+  const StableTimeStep stable{7.45161e-7, "the seed law"};
+  for (const double typed : {7.452e-7, 7.451e-7, 7.4516e-7}) {  // "%.4g" rounds up, down, or more digits
+    const TimeStepChoice c = choose_time_step(stable, typed, false);
+    EXPECT_EQ(c.value, stable.value) << typed;
+    EXPECT_TRUE(c.warning.empty()) << typed;
+  }
+  try {
+    choose_time_step(stable, 7.46e-7, false);
+    ADD_FAILURE() << "a step 0.11 % above the stable one was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("force"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("7.452e-07 s"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace feedflow
