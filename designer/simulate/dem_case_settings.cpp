@@ -1,6 +1,7 @@
 #include "designer/simulate/dem_case_settings.hpp"
 
 #include "models/core/errors.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 
@@ -13,6 +14,15 @@ DemSettings dem_case_settings(const Case& c) {
   s.law = choose_contact_law(c.dem.normal_law);
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
   return s;
+}
+
+void require_slab_depth(const Case& c, const DemSettings& settings, double slab_depth) {
+  const double r = settings.material.particle.radius;
+  const double cutoff = 2.0 * r * (1.0 + settings.skin_fraction);
+  if (slab_depth < 2.0 * cutoff)
+    throw InputError(c.file, "dem.slab_depth",
+                     "the periodic slab must be at least two neighbour cutoffs deep (" +
+                         format_number(2.0 * cutoff * 1e3, 3) + " mm for R = " + format_number(r * 1e3, 3) + " mm)");
 }
 
 }  // namespace feedflow

@@ -10,4 +10,8 @@ namespace feedflow {
 // Throws InputError naming the material when it has no [dem] parameters.
 DemSettings dem_case_settings(const Case& c);
 
+// Throws InputError naming dem.slab_depth when a periodic slab is thinner than two neighbour
+// cutoffs of the settings' particles (a particle would meet its own image).
+void require_slab_depth(const Case& c, const DemSettings& settings, double slab_depth);
+
 }  // namespace feedflow

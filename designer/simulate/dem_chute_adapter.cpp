@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/quantity_format.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -16,13 +16,6 @@ namespace {
 constexpr double kDefaultSlab = 0.015;    // [m] the seed's slab, five diameters
 constexpr double kDefaultRunTime = 30.0;  // [s] after the release at most (seed: 18.8 s)
 constexpr double kSampleInterval = 0.02;  // [s]
-
-std::string fmt(double v, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
   const Chute& chute = std::get<Chute>(c.equipment);
@@ -35,12 +28,7 @@ InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
   spec.gate_opening = chute.gate_opening;
   spec.slab_depth = c.dem.slab_depth.value_or(kDefaultSlab);
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
-  const double r = settings.material.particle.radius;
-  const double cutoff = 2.0 * r * (1.0 + settings.skin_fraction);
-  if (spec.slab_depth < 2.0 * cutoff)
-    throw InputError(c.file, "dem.slab_depth",
-                     "the periodic slab must be at least two neighbour cutoffs deep (" +
-                         fmt(2.0 * cutoff * 1e3) + " mm for R = " + fmt(r * 1e3) + " mm)");
+  require_slab_depth(c, settings, spec.slab_depth);
   return spec;
 }
 
@@ -112,7 +100,7 @@ class DemChuteAdapter final : public SceneAdapter {
     results.emplace_back("deposit_thickness_mid_ramp",
                          Estimate{d.mid_ramp.value, "m", d.mid_ramp.low, d.mid_ramp.high,
                                   "DEM (" + contact_law_name(e.effective_law()) + "): highest particle top per " +
-                                      fmt(2 * r * 1e3) + " mm bin, mean over mid-ramp +-5 % (band: the bins' range)",
+                                      format_number(2 * r * 1e3, 3) + " mm bin, mean over mid-ramp +-5 % (band: the bins' range)",
                                   Rung::L3, "mm"});
     results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
                                                    "DEM: farthest bin with a particle", Rung::L3, ""});
@@ -127,9 +115,9 @@ class DemChuteAdapter final : public SceneAdapter {
     auto& notes = record.verdict.reasons;
     if (run.end == RunEnd::interrupted) notes.push_back("interrupted: the deposit is the state so far");
     else if (run.end == RunEnd::duration && !request_.end_time)
-      notes.push_back("the flow had not stopped within " + fmt(duration_) + " s: the deposit is still moving");
+      notes.push_back("the flow had not stopped within " + format_number(duration_, 3) + " s: the deposit is still moving");
     if (d.front < 0.5 * chute_.length)
-      notes.push_back("the deposit ends at " + fmt(d.front) + " m, before mid-ramp: h_stop at mid-ramp is 0");
+      notes.push_back("the deposit ends at " + format_number(d.front, 3) + " m, before mid-ramp: h_stop at mid-ramp is 0");
     if (!e.spring_warning().empty()) notes.push_back(e.spring_warning());
   }
 
@@ -157,10 +145,10 @@ class DemChuteAdapter final : public SceneAdapter {
     const double r = scene_.settings().material.particle.radius;
     const double slab = scene_.spec().slab_depth;
     auto& a = record.assumptions;
-    a.push_back("DEM inclined plane: spheres of R = " + fmt(r * 1e3) + " mm, Table 2 parameters, law " +
-                contact_law_name(e.effective_law()) + ", time step " + fmt(e.time_step() * 1e6) + " us");
-    a.push_back("periodic slab " + fmt(slab * 1e3) + " mm deep standing for the " + fmt(chute_.width * 1e3) +
-                " mm ramp (masses scale by " + fmt(chute_.width / slab) + "); no side walls or lateral spill");
+    a.push_back("DEM inclined plane: spheres of R = " + format_number(r * 1e3, 3) + " mm, Table 2 parameters, law " +
+                contact_law_name(e.effective_law()) + ", time step " + format_number(e.time_step() * 1e6, 3) + " us");
+    a.push_back("periodic slab " + format_number(slab * 1e3, 3) + " mm deep standing for the " + format_number(chute_.width * 1e3, 3) +
+                " mm ramp (masses scale by " + format_number(chute_.width / slab, 3) + "); no side walls or lateral spill");
     a.push_back("the bin stands on the upper end of the ramp with its walls normal to it (the seed gives no drawing)");
     a.push_back("no-slip ramp as a saw-tooth mesh (45 deg faces, period 2R, height R) standing for the glued chips; "
                 "the deposit height is measured above the teeth's crests");

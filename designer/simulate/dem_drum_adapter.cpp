@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
@@ -10,6 +9,7 @@
 #include "fullsim/dem/scene/drum_scene.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/angle.hpp"
+#include "models/units/quantity_format.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -17,13 +17,6 @@ namespace {
 
 constexpr double kDefaultRotation = 10.0;  // [s] of rotation at most (the seed's 10 s)
 constexpr double kSampleInterval = 0.02;   // [s]
-
-std::string fmt(double v, int digits = 3) {
-  std::ostringstream s;
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
 
 // A slab has no turning end plates to help carry the bed: its shell takes the case's wall
 // friction (the seed FEM's slab value) instead of Table 2's P-W 0.2, with which the bed slips.
@@ -46,12 +39,7 @@ DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
   spec.speed = drum.speed;
   spec.slab_depth = c.dem.slab_depth;
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
-  const double r = settings.material.particle.radius;
-  const double cutoff = 2.0 * r * (1.0 + settings.skin_fraction);
-  if (spec.slab_depth && *spec.slab_depth < 2.0 * cutoff)
-    throw InputError(c.file, "dem.slab_depth",
-                     "the periodic slab must be at least two neighbour cutoffs deep (" +
-                         fmt(2.0 * cutoff * 1e3) + " mm for R = " + fmt(r * 1e3) + " mm)");
+  if (spec.slab_depth) require_slab_depth(c, settings, *spec.slab_depth);
   return spec;
 }
 
@@ -76,8 +64,8 @@ class DemDrumAdapter final : public SceneAdapter {
     const bool fresh = request_.restart.empty();
     const auto& spec = scene_.spec();
     log << "drum scene plan: "
-        << (spec.slab_depth ? "periodic axial slab " + fmt(*spec.slab_depth * 1e3) + " mm deep (no end walls; stands for the " +
-                                  fmt(drum_.length * 1e3) + " mm drum)"
+        << (spec.slab_depth ? "periodic axial slab " + format_number(*spec.slab_depth * 1e3, 3) + " mm deep (no end walls; stands for the " +
+                                  format_number(drum_.length * 1e3, 3) + " mm drum)"
                             : "full 3D drum with turning end plates")
         << ", D = " << drum_.diameter * 1e3 << " mm, fill " << drum_.fill_fraction * 100 << " %, "
         << drum_.speed * 30.0 / std::numbers::pi << " rpm; analytic cylinder shell; filled by "
@@ -149,7 +137,7 @@ class DemDrumAdapter final : public SceneAdapter {
         "regime", Estimate{measured ? std::string(to_string(regime.regime)) : std::string("not measured"), "",
                            std::nullopt, std::nullopt,
                            measured ? "DEM: measured bed state (" + regime.reason + ")"
-                                    : "DEM: the run ended within the spin-up of " + fmt(watch_.spin_up()) + " s",
+                                    : "DEM: the run ended within the spin-up of " + format_number(watch_.spin_up(), 3) + " s",
                            Rung::L3, ""});
     results.emplace_back("particles", Estimate{static_cast<double>(scene_.engine().particles().size()), "",
                                                std::nullopt, std::nullopt, "DEM scene", Rung::L3, ""});
@@ -161,10 +149,10 @@ class DemDrumAdapter final : public SceneAdapter {
     auto& notes = record.verdict.reasons;
     if (run.end == RunEnd::interrupted) notes.push_back("interrupted: the result covers the run so far");
     if (!measured)
-      notes.push_back("the run ended within the spin-up (" + fmt(watch_.spin_up()) + " s of rotation): no steady "
-                      "angle or regime; run longer than " + fmt(watch_.spin_up() + 2 * watch_.window()) + " s");
+      notes.push_back("the run ended within the spin-up (" + format_number(watch_.spin_up(), 3) + " s of rotation): no steady "
+                      "angle or regime; run longer than " + format_number(watch_.spin_up() + 2 * watch_.window(), 3) + " s");
     if (run.end == RunEnd::duration && !request_.end_time)
-      notes.push_back("the angle had not converged within " + fmt(duration_) + " s of rotation");
+      notes.push_back("the angle had not converged within " + format_number(duration_, 3) + " s of rotation");
     if (request_.restart.empty() && scene_.trimmed() == 0)
       notes.push_back("the settled packing fell short of the fill line: the bed is below the asked fill");
     if (!scene_.engine().spring_warning().empty()) notes.push_back(scene_.engine().spring_warning());
@@ -197,14 +185,14 @@ class DemDrumAdapter final : public SceneAdapter {
     const auto& spec = scene_.spec();
     const double r = settings_.material.particle.radius;
     auto& a = record.assumptions;
-    a.push_back("DEM drum: " + fmt(static_cast<double>(scene_.engine().particles().size()), 6) + " spheres of R = " +
-                fmt(r * 1e3) + " mm, Table 2 parameters, law " + contact_law_name(scene_.engine().effective_law()) +
-                ", time step " + fmt(scene_.engine().time_step() * 1e6) + " us");
+    a.push_back("DEM drum: " + format_number(static_cast<double>(scene_.engine().particles().size()), 6) + " spheres of R = " +
+                format_number(r * 1e3, 3) + " mm, Table 2 parameters, law " + contact_law_name(scene_.engine().effective_law()) +
+                ", time step " + format_number(scene_.engine().time_step() * 1e6, 3) + " us");
     if (spec.slab_depth) {
-      a.push_back("periodic axial slab " + fmt(*spec.slab_depth * 1e3) + " mm deep standing for the " +
-                  fmt(drum_.length * 1e3) + " mm drum (masses scale by " + fmt(drum_.length / *spec.slab_depth) +
+      a.push_back("periodic axial slab " + format_number(*spec.slab_depth * 1e3, 3) + " mm deep standing for the " +
+                  format_number(drum_.length * 1e3, 3) + " mm drum (masses scale by " + format_number(drum_.length / *spec.slab_depth, 3) +
                   "): no end-wall friction, so the angle errs low (Jop et al. 2005: tan beta rises by mu_w delta/W)");
-      a.push_back("slab shell friction " + fmt(shell_friction(drum_)) + " (the case's wall friction angle) instead of "
+      a.push_back("slab shell friction " + format_number(shell_friction(drum_), 3) + " (the case's wall friction angle) instead of "
                   "Table 2's P-W 0.2: without the turning end plates the bed slips on a 0.2 shell "
                   "(no slip needs mu_w > (r_g/R) sin beta, about 0.24 here)");
     } else {

@@ -46,6 +46,17 @@ DemEngine settling_block(double time_step = 0.0) {
   return e;
 }
 
+// The pilot hopper's 30 deg wedge, 60 mm outlet, 0.3 m bin filled 0.35 m, pine on 20 mm cells.
+cel::CelScene small_hopper_scene() {
+  Hopper h;
+  h.shape = "wedge";
+  h.semi_angle = 30.0 * kDegree;
+  h.outlet_width = 0.06;
+  h.fill_height = 0.35;
+  h.bin_width = 0.3;
+  return cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
+}
+
 SceneRunOptions block_options(const DemEngine& e, const fs::path& out, double duration) {
   SceneRunOptions o;
   o.out = out;
@@ -85,13 +96,7 @@ TEST(StepperContract, FixedStepEngineMeetsTheStepGrid) {
 // in which the scene's event (the end of the gravity phase) happened, so the loop can plan the
 // run's end from it.
 TEST(StepperContract, AdaptiveStepEngineStopsPastTheTimeAndAtItsEvent) {
-  Hopper h;
-  h.shape = "wedge";
-  h.semi_angle = 30.0 * kDegree;
-  h.outlet_width = 0.06;
-  h.fill_height = 0.35;
-  h.bin_width = 0.3;
-  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
+  cel::CelScene scene = small_hopper_scene();
   cel::CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));
   std::ostringstream log;
   run.prepare(log);
@@ -183,13 +188,7 @@ TEST(SceneRun, RestartedDemRunContinuesTheSameSeries) {
 // where the uninterrupted one did and samples the same rows.
 TEST(SceneRun, RestartedCelRunContinuesTheSameSeries) {
   const fs::path whole = scratch("cel_whole"), first = scratch("cel_first"), second = scratch("cel_second");
-  Hopper h;
-  h.shape = "wedge";
-  h.semi_angle = 30.0 * kDegree;
-  h.outlet_width = 0.06;
-  h.fill_height = 0.35;
-  h.bin_width = 0.3;
-  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
+  cel::CelScene scene = small_hopper_scene();
   scene.gravity.ramp_time = 0.3;
   scene.gravity.min_time = 0.35;
   const HypoplasticModel model = make_hypoplastic_model(loblolly_pine_table1());
