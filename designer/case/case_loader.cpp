@@ -190,8 +190,13 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
     read_fields(*design, design_target_fields(), c.design, ctx);
     raise_problems(check(c.design, c.kind(), keys), *design, ctx, &c.warnings);
   }
-  if (const toml::table* dem = table_at(root, "dem", path))
+  if (const toml::table* dem = table_at(root, "dem", path)) {
     read_fields(*dem, dem_case_fields(), c.dem, TableContext{"dem", path});
+    if (c.dem.time_step && c.dem.time_step_safety)
+      raise_problems({{"time_step_safety", "give either [dem] time_step or time_step_safety, not both (the step or "
+                                           "its fraction of the stable one)"}},
+                     *dem, TableContext{"dem", path}, nullptr);
+  }
   if (const toml::table* cel = table_at(root, "cel", path))
     read_fields(*cel, cel_case_fields(), c.cel, TableContext{"cel", path});
   return c;

@@ -27,6 +27,11 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
                                kTimeRange, "time between particle snapshots"),
       optional_number_field<S>("time_step", &S::time_step, dim::time, "us", Range{0.0, 1.0, false, true},
                                "time step instead of the stable one (smaller: warned)"),
+      optional_number_field<S>("time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
+                               Range{0.0, 1.0, false, true},
+                               "fraction of the stable step (models.md 5.1: 20 steps per period of the "
+                               "stiffest spring, 0.2 Rayleigh and Hertz times); above 1 the contacts are "
+                               "not resolved"),
       whole_number(optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
                                             Range::closed(0.0, 4294967295.0),
                                             "seed of the rain-fall insertion (a whole number)")),
@@ -47,6 +52,11 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
                                "simulated time after the gravity phase"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between field snapshots"),
+      optional_number_field<S>("time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
+                               Range{0.0, 1.0, false, true},
+                               "Courant number of the step (default 0.8): the step is this fraction of a "
+                               "cell crossed at the wave speed plus the flow speed; above 1 a wave "
+                               "crosses more than a cell per step"),
       label_field<S>("remap_order", &S::remap_order, kRemapOrders,
                      "advection in the remap: first (donor cell, default), second (van Leer "
                      "MUSCL on stress, void ratio, density and nodal momentum), or second "

@@ -14,6 +14,7 @@ struct DemCaseSettings {
   std::optional<double> end_time;           // [s] simulated time after filling (--time wins)
   std::optional<double> snapshot_interval;  // [s] between HDF5 particle snapshots
   std::optional<double> time_step;          // [s] below the stable step (warned) or forced
+  std::optional<double> time_step_safety;   // [-] fraction of the stable step, (0, 1]
   std::optional<double> random_seed;        // [-] of the rain-fall insertion
   std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
 };
@@ -22,6 +23,7 @@ struct CelCaseSettings {
   std::optional<double> cell_size;          // [m] edge of the square Eulerian cells
   std::optional<double> end_time;           // [s] simulated time after the gravity phase
   std::optional<double> snapshot_interval;  // [s] between HDF5 field snapshots
+  std::optional<double> time_step_safety;   // [-] Courant number of the step, (0, 1]
   std::string remap_order;                  // empty: first; second; second_<quantity>
   std::string material_flux;                // empty: donor_cell; limited; plic
   std::string mixed_cells;                  // empty: equal_strain_rate; void_first

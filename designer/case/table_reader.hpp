@@ -101,10 +101,10 @@ void read_fields(const toml::table& table, std::span<const FieldSpec<Record>> fi
       continue;
     }
     const double si = read_quantity(value, f.dimension, key, ctx);
-    if (!f.range.contains(si))
+    if (!f.range.contains(si))  // the description says what the key is, and so why the range
       throw InputError(location(value, ctx.file), key,
                        "out of range: " + f.range.describe(f.display_unit) + ", got " +
-                           format_for_error(si, f.display_unit));
+                           format_for_error(si, f.display_unit) + " (" + std::string(f.description) + ")");
     if (f.whole && si != std::floor(si))
       throw InputError(location(value, ctx.file), key,
                        "expected a whole number, got " + format_for_error(si, f.display_unit));

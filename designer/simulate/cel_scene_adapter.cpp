@@ -61,6 +61,7 @@ CelSceneAdapter::CelSceneAdapter(const SimulationRequest& request, cel::CelScene
   if (c.cel.mixed_cells == "void_first") scene_.options.mixed_cells = cel::MixedCellRule::void_first;
   if (c.cel.mixed_cells == "equal_strain_rate")
     scene_.options.mixed_cells = cel::MixedCellRule::equal_strain_rate;
+  if (c.cel.time_step_safety) scene_.options.time_step.safety = *c.cel.time_step_safety;
   model_label_ = model_label_of(c, scene_.options.remap);
 }
 

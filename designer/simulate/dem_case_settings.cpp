@@ -13,6 +13,7 @@ DemSettings dem_case_settings(const Case& c) {
   s.material = *c.material.dem;
   s.law = choose_contact_law(c.dem.normal_law);
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
+  if (c.dem.time_step_safety) s.stable_step_fraction = *c.dem.time_step_safety;
   return s;
 }
 

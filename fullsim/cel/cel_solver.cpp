@@ -115,7 +115,8 @@ CelStepReport CelSolver::step() {
       << " kg/m^3, pressure " << -cells_.stress[c].trace() / 3.0 << " Pa)";
     if (dt_previous_ > 0.0)
       s << "; the last step was " << dt_previous_ << " s, try a time step below "
-        << 0.5 * dt_previous_ << " s (time_step.safety " << 0.5 * options_.time_step.safety << ")";
+        << dt_previous_ * safer_courant() / options_.time_step.safety << " s ([cel] time_step_safety "
+        << safer_courant() << ")";
     else
       s << " in the initial state (check the material block's density, void ratio and stress)";
     throw NumericalFailure(s.str());
@@ -153,13 +154,17 @@ void CelSolver::run_until(double t_end) {
   while (time_ < t_end) step();
 }
 
+double CelSolver::safer_courant() const {
+  return std::min(0.5 * options_.time_step.safety, TimeStepOptions{}.safety);  // half, and at most the default
+}
+
 void CelSolver::guard(const CelStepReport& report) const {
   const auto fail = [&](std::size_t c, const std::string& what) {
     std::ostringstream s;
     s << "CEL blow-up at step " << steps_ << ", t = " << time_ << " s, cell (" << grid_.cell_i(c)
       << ", " << grid_.cell_j(c) << "): " << what << "; the step was " << report.dt
-      << " s, try a time step below " << 0.5 * report.dt << " s (time_step.safety "
-      << 0.5 * options_.time_step.safety << ")";
+      << " s, try a time step below " << report.dt * safer_courant() / options_.time_step.safety
+      << " s ([cel] time_step_safety " << safer_courant() << ")";
     throw NumericalFailure(s.str());
   };
   if (report.remap.max_outflow_fraction > 1.0)

@@ -128,6 +128,8 @@ class CelSolver {
   void refresh_active_cells();
   void refresh_nodes();
   double gravity_factor(double t) const;
+  // The Courant number a blow-up message advises: half the one used, at most the default.
+  double safer_courant() const;
   void guard(const CelStepReport& report) const;
 
   PlaneStrainGrid grid_;

@@ -15,7 +15,7 @@
 namespace feedflow::cel {
 
 struct TimeStepOptions {
-  double safety = 0.8;           // s in (0, 1]
+  double safety = 0.8;           // s: the Courant number ([cel] time_step_safety, at most 1)
   double max_time_step = 1e-3;   // cap [s] (loose, nearly stress-free material is very soft)
 };
 

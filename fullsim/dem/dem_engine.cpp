@@ -214,7 +214,10 @@ void DemEngine::prepare(std::ostream& out) {
   const StiffestSpring springs =
       design_springs(dem, effective_law_, effective_law_, settings_.time_step.design_overlap);
   const StableTimeStep stable = stable_time_step(dem, springs, settings_.time_step);
-  time_step_ = choose_time_step(stable, settings_.requested_time_step, settings_.force_time_step);
+  const double requested = settings_.requested_time_step > 0.0 || settings_.stable_step_fraction == 1.0
+                               ? settings_.requested_time_step
+                               : settings_.stable_step_fraction * stable.value;
+  time_step_ = choose_time_step(stable, requested, settings_.force_time_step);
 
   guard_ = BlowUpGuard(settings_.guard, stable.value);
   checked_ratio_ = settings_.time_step.design_overlap;  // the design springs hold up to here

@@ -44,7 +44,8 @@ struct DemSettings {
   double skin_fraction = 0.3;                // Verlet skin / largest radius [-]
   std::size_t sort_every = 20;               // re-sort along the Morton curve every N rebuilds
   TimeStepSettings time_step;                // safety factors of the stable step
-  double requested_time_step = 0.0;          // [s]; 0: the stable step
+  double requested_time_step = 0.0;          // [s]; 0: stable_step_fraction x the stable step
+  double stable_step_fraction = 1.0;         // of the stable step when no step is requested
   bool force_time_step = false;              // accept a step above the stable one
   BlowUpLimits guard;
   std::size_t parallel_from = 4000;          // fewer particles run on one thread (the

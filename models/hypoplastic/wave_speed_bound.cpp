@@ -24,9 +24,8 @@ double dilatational_wave_speed_bound(const HypoplasticModel& m, const Tensor3& s
 }
 
 double cfl_time_step(double cell_size, double wave_speed, double speed, double safety) {
-  if (!(cell_size > 0.0) || !(wave_speed >= 0.0) || !(safety > 0.0 && safety <= 1.0))
-    throw std::invalid_argument(
-        "cfl_time_step: need cell size > 0, wave speed >= 0 and safety in (0, 1]");
+  if (!(cell_size > 0.0) || !(wave_speed >= 0.0) || !(safety > 0.0 && std::isfinite(safety)))
+    throw std::invalid_argument("cfl_time_step: need cell size > 0, wave speed >= 0 and a finite safety > 0");
   const double signal = wave_speed + std::abs(speed);
   if (!(signal > 0.0))
     throw std::invalid_argument("cfl_time_step: wave speed and material speed are both zero");

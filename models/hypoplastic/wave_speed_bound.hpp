@@ -15,7 +15,8 @@ double tangent_modulus_bound(const HypoplasticModel& m, const Tensor3& stress, d
 double dilatational_wave_speed_bound(const HypoplasticModel& m, const Tensor3& stress,
                                      double void_ratio, double bulk_density);
 
-// dt = safety * L / (c_d + |v|) [s] for cell edge L [m]; safety in (0, 1].
+// dt = safety * L / (c_d + |v|) [s] for cell edge L [m]; safety > 0 (the Courant number: above 1
+// the explicit update is unstable, which only the time-step stress tests ask for).
 double cfl_time_step(double cell_size, double wave_speed, double speed, double safety);
 
 }  // namespace feedflow

@@ -54,6 +54,13 @@ TEST_F(InputRanges, OutOfRangeInputIsRefusedNamingTheKeyAndRange) {
       {"design cases/rotating_drum_20rpm.toml --set drum.diameter=12mm --set material.psd.d50=1.5mm",
        "drum.diameter", "at least 10 median grain sizes (15 mm"},
       {"design cases/pilot_hopper.toml --set dem.random_seed=1.5", "dem.random_seed", "a whole number"},
+      {"simulate cases/rotating_drum_20rpm.toml --solver dem --set dem.time_step_safety=2 --time 0.02s",
+       "dem.time_step_safety", "<= 1, got 2 (fraction of the stable step"},
+      {"simulate cases/pilot_hopper.toml --solver cel --set cel.time_step_safety=1.5 --time 0.02s",
+       "cel.time_step_safety", "above 1 a wave crosses more than a cell per step"},
+      {"simulate cases/rotating_drum_20rpm.toml --solver dem --set dem.time_step_safety=0.5 --set dem.time_step=1us "
+       "--time 0.02s",
+       "dem.time_step_safety", "not both"},
       {"design cases/inclined_plane_29_5.toml --set chute.bin_length=31m", "chute.bin_length", "<= 5000 mm"},
       {"design cases/inclined_plane_29_5.toml --set chute.gate_opening=0.35mm", "chute.gate_opening", ">= 10 mm"},
       {"simulate cases/rotating_drum_20rpm.toml --solver dem --set dem.slab_depth=1e9m --time 0.02s",
