@@ -86,17 +86,10 @@ class DemDrumAdapter final : public SceneAdapter {
 
   void restore(const Hdf5File& f) override {
     scene_.set_rotation_start(f.double_attribute("/scene", "rotation_start"));
+    watch_.restore(f, "/scene/angle_watch");
   }
 
   void plan(SceneRunOptions& run) override {
-    for (const auto& row : run.previous.rows()) {  // a restarted run's samples (without the profile)
-      DrumSample s;
-      s.time = row[0];
-      s.angle = row[1] * kDegree;
-      s.valid = row[2] > 0.5;
-      s.state = {0.0, 0.0, row[3], row[4], row[5], row[6]};
-      watch_.add(s);
-    }
     const Case& c = request_.case_data;
     run.label = "DEM drum";
     run.origin = run.sample_origin = scene_.rotation_start();
@@ -117,7 +110,10 @@ class DemDrumAdapter final : public SceneAdapter {
                                   : std::string();
       };
     const double rotation_start = scene_.rotation_start();
-    run.save_scene = [rotation_start](Hdf5File& f) { f.set_attribute("/scene", "rotation_start", rotation_start); };
+    run.save_scene = [this, rotation_start](Hdf5File& f) {
+      f.set_attribute("/scene", "rotation_start", rotation_start);
+      watch_.save(f, "/scene/angle_watch");
+    };
     duration_ = run.duration;
   }
 

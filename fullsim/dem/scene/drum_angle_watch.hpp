@@ -8,8 +8,10 @@
 // does not read as curvature. A bed without a free surface (centrifuging) has converged once
 // the windows have passed.
 #include <optional>
+#include <string>
 #include <vector>
 
+#include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/common/steady_angle.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
 
@@ -40,6 +42,10 @@ class DrumAngleWatch {
   const std::vector<DrumSample>& samples() const { return samples_; }
   double spin_up() const { return windows_.spin_up; }
   double window() const { return windows_.window; }
+  // Every sample, surface points included, into and from `group` of a checkpoint: a restarted
+  // run measures exactly what the uninterrupted one does.
+  void save(Hdf5File& file, const std::string& group) const;
+  void restore(const Hdf5File& file, const std::string& group);
 
  private:
   std::vector<AngleSample> angles() const;
