@@ -46,14 +46,17 @@ class BlowUpGuard {
   void check_spring(double dt, double period, const std::string& spring, double safe_dt,
                     const ParticleStore& p, std::size_t slot, long step) const;
 
-  // The energy book (checkpoints): initial kinetic energy, floor, gravity work so far [J].
+  // The energy book (checkpoints): initial kinetic energy, floor, gravity work so far [J], and
+  // the wall surface speed the floor allows for [m/s] (0: set while every wall stood still).
   double initial_energy() const { return initial_energy_; }
   double energy_floor() const { return floor_; }
   double gravity_work() const { return gravity_work_; }
-  void resume(double initial_energy, double floor, double gravity_work) {
+  double wall_speed() const { return wall_speed_; }
+  void resume(double initial_energy, double floor, double gravity_work, double wall_speed) {
     initial_energy_ = initial_energy;
     floor_ = floor;
     gravity_work_ = gravity_work;
+    wall_speed_ = wall_speed;
   }
 
   const BlowUpLimits& limits() const { return limits_; }

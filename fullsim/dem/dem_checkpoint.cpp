@@ -139,6 +139,7 @@ void write_contents(Hdf5File& f, const DemCheckpoint& c) {
   set_quantity(f, "/guard", "initial_energy", c.guard_initial_energy, "J");
   set_quantity(f, "/guard", "energy_floor", c.guard_energy_floor, "J");
   set_quantity(f, "/guard", "gravity_work", c.guard_gravity_work, "J");
+  set_quantity(f, "/guard", "wall_speed", c.guard_wall_speed, "m/s");
 }
 
 template <class T>
@@ -259,6 +260,7 @@ DemCheckpoint read_contents(const Hdf5File& f) {
   c.guard_initial_energy = f.double_attribute("/guard", "initial_energy");
   c.guard_energy_floor = f.double_attribute("/guard", "energy_floor");
   c.guard_gravity_work = f.double_attribute("/guard", "gravity_work");
+  c.guard_wall_speed = f.double_attribute("/guard", "wall_speed");
   return c;
 }
 

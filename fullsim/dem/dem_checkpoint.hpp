@@ -5,9 +5,10 @@
 // the neighbour list as it stands (entries, id pairs, contact history, positions at the last
 // rebuild, rebuild counter that schedules the Morton re-sort), the walls' current pose and
 // motion, the outlet sink's booked mass and events, the box, the step, the time, the time step
-// and the blow-up guard's energy book. Written whole or not at all (a temporary beside the
-// target, renamed over it). A file of another format or version, a truncated or inconsistent
-// one is refused with a std::runtime_error naming the file and what is wrong.
+// and the blow-up guard's energy book (with the wall speed its floor allows for). Written whole
+// or not at all (a temporary beside the target, renamed over it). A file of another format or
+// version, a truncated or inconsistent one is refused with a std::runtime_error naming the file
+// and what is wrong.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -22,7 +23,8 @@
 
 namespace feedflow {
 
-constexpr std::int64_t kDemCheckpointVersion = 1;
+// Version 2: the guard's book holds the wall speed its floor allows for (/guard wall_speed).
+constexpr std::int64_t kDemCheckpointVersion = 2;
 inline constexpr const char* kDemCheckpointFormat = "feedflow DEM checkpoint";
 
 struct DemCheckpoint {
@@ -40,6 +42,7 @@ struct DemCheckpoint {
   double guard_initial_energy = 0.0;  // [J]
   double guard_energy_floor = 0.0;    // [J]
   double guard_gravity_work = 0.0;    // [J]
+  double guard_wall_speed = 0.0;      // [m/s] the floor allows for (0: set with still walls)
 };
 
 class Hdf5File;

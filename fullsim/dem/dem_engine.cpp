@@ -79,6 +79,7 @@ DemCheckpoint DemEngine::checkpoint() const {
   c.guard_initial_energy = guard_.initial_energy();
   c.guard_energy_floor = guard_.energy_floor();
   c.guard_gravity_work = guard_.gravity_work();
+  c.guard_wall_speed = guard_.wall_speed();
   return c;
 }
 
@@ -135,7 +136,8 @@ void DemEngine::restore_prepared_state() {
   if (particles_.wall_history_stride() != wall_history_stride())
     refuse("the wall history does not match the walls and the law");
   neighbours_ = c.neighbours;
-  guard_.resume(c.guard_initial_energy, c.guard_energy_floor, c.guard_gravity_work);
+  guard_.resume(c.guard_initial_energy, c.guard_energy_floor, c.guard_gravity_work,
+                c.guard_wall_speed);
   pending_.reset();
 }
 
@@ -229,10 +231,13 @@ void DemEngine::prepare(std::ostream& out) {
   // and dropped over the bed's height.
   const double v_fed = v_wall > 0.0 ? v_wall + std::sqrt(2.0 * settings_.gravity.norm() * bed_height()) : 0.0;
   if (pending_) {
-    // A restored run keeps its list, forces and energy book as they were; walls set moving
-    // since the checkpoint was taken (a drum started after settling) raise its floor.
+    // A restored run keeps its list, forces and energy book as they were. Walls set moving
+    // since the checkpoint was taken (a drum started after settling: the book's floor was set
+    // with still walls) raise its floor; a book that already allows for moving walls is kept
+    // as it is, not re-taken from the bed at the restart (a tilted bed is taller than the one
+    // the uninterrupted run took it from, and the continued run would differ from it).
     restore_prepared_state();
-    if (v_wall > 0.0)
+    if (v_wall > 0.0 && guard_.wall_speed() == 0.0)
       guard_.allow_moving_walls(0.5 * mass * (v_design * v_design + v_fed * v_fed), v_wall);
   } else {
     neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());

@@ -4,6 +4,7 @@
 // checkpoint written, the reduced-model values beside the DEM ones.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <fstream>
 #include <tuple>
 
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "fullsim/dem/dem_checkpoint.hpp"
 #include "run_feedflow.hpp"
 
 namespace fs = std::filesystem;
@@ -28,6 +30,61 @@ class SimulateDem : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
+
+// The same bytes in two arrays (doubles compared bit for bit, not by value).
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Two DEM checkpoints hold the same state to the last bit in every group: /run, /box, /particles,
+// /neighbours, /walls, /outlet_sink and the blow-up guard's energy book in /guard.
+void expect_same_checkpoint(const fs::path& straight, const fs::path& restarted) {
+  const feedflow::DemCheckpoint a = feedflow::read_dem_checkpoint(straight);
+  const feedflow::DemCheckpoint b = feedflow::read_dem_checkpoint(restarted);
+  EXPECT_EQ(a.step, b.step);
+  EXPECT_TRUE(same_bits(a.time, b.time) && same_bits(a.time_step, b.time_step) &&
+              same_bits(a.particle_steps, b.particle_steps) && a.contact_law == b.contact_law &&
+              a.gravity == b.gravity)
+      << "/run";
+  EXPECT_TRUE(a.box.lower == b.box.lower && a.box.upper == b.box.upper &&
+              a.box.periodic == b.box.periodic)
+      << "/box";
+  const auto &p = a.particles, &q = b.particles;
+  EXPECT_TRUE(same_bits(p.position, q.position) && same_bits(p.velocity, q.velocity) &&
+              same_bits(p.angular_velocity, q.angular_velocity) && same_bits(p.force, q.force) &&
+              same_bits(p.torque, q.torque) && same_bits(p.radius, q.radius) &&
+              same_bits(p.mass, q.mass) && same_bits(p.inertia, q.inertia) &&
+              same_bits(p.layer, q.layer) && p.id == q.id &&
+              same_bits(p.wall_history, q.wall_history) && p.next_id() == q.next_id())
+      << "/particles";
+  const auto &l = a.neighbours, &m = b.neighbours;
+  EXPECT_TRUE(l.first == m.first && l.partner == m.partner && l.entry_keys() == m.entry_keys() &&
+              same_bits(l.history, m.history) &&
+              same_bits(l.reference_positions(), m.reference_positions()) &&
+              l.rebuild_count() == m.rebuild_count() && same_bits(l.skin(), m.skin()))
+      << "/neighbours";
+  ASSERT_EQ(a.walls.size(), b.walls.size());
+  for (std::size_t k = 0; k < a.walls.size(); ++k) {
+    EXPECT_TRUE(a.walls[k].point() == b.walls[k].point() &&
+                a.walls[k].velocity() == b.walls[k].velocity() &&
+                a.walls[k].angular_velocity() == b.walls[k].angular_velocity() &&
+                same_bits(a.walls[k].removal_time(), b.walls[k].removal_time()))
+        << "/walls/" << k;
+  }
+  ASSERT_EQ(a.sink.has_value(), b.sink.has_value());
+  if (a.sink) {
+    EXPECT_TRUE(same_bits(a.sink->removed_mass(), b.sink->removed_mass())) << "/outlet_sink";
+  }
+  EXPECT_TRUE(same_bits(a.guard_initial_energy, b.guard_initial_energy)) << "/guard initial_energy";
+  EXPECT_TRUE(same_bits(a.guard_energy_floor, b.guard_energy_floor))
+      << "/guard energy_floor: " << a.guard_energy_floor << " J straight, " << b.guard_energy_floor
+      << " J restarted";
+  EXPECT_TRUE(same_bits(a.guard_gravity_work, b.guard_gravity_work)) << "/guard gravity_work";
+  EXPECT_TRUE(same_bits(a.guard_wall_speed, b.guard_wall_speed)) << "/guard wall_speed";
+}
 
 const char* kTwin =
     " --set dem.slab_depth=18mm --set dem.normal_law=hertz --set material.dem.particle.radius=3mm";
@@ -59,7 +116,9 @@ TEST_F(SimulateDem, DrumWritesRungL3AngleAndRegime) {
 
 // Restart: a drum run stopped at 0.4 s of rotation and continued from its checkpoint to 0.8 s
 // writes the same time series, to the last digit, as an uninterrupted 0.8 s run (the angle, the
-// bed state and the kinetic energy at every sample).
+// bed state and the kinetic energy at every sample), and ends with the same checkpoint, bit for
+// bit, including the blow-up guard's energy floor (which the turning bed, taller at the restart
+// than when the shell started, must not move).
 TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
   const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin;
   ASSERT_EQ(run_feedflow(run + " --time 0.8s --out whole", dir_).exit_code, 0);
@@ -69,12 +128,14 @@ TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
   const std::string whole = slurp(dir_ / "whole/timeseries.csv");
   EXPECT_GT(std::count(whole.begin(), whole.end(), '\n'), 30);
   EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
+  expect_same_checkpoint(dir_ / "whole/checkpoint.h5", dir_ / "second/checkpoint.h5");
 }
 
-// Restart on the inclined plane: a small plane (~700 rain-filled spheres, 100 x 80 mm fill, 50 mm gate) stopped
-// 0.15 s after the release and continued from its checkpoint to 0.3 s writes the same time series,
-// to the last digit, as an uninterrupted 0.3 s run, while the material is still running down the
-// ramp (the front moves), so the contact history in the checkpoint is exercised.
+// Restart on the inclined plane: a small plane (~700 rain-filled spheres, 100 x 80 mm fill, 50 mm
+// gate) stopped 0.15 s after the release and continued from its checkpoint to 0.3 s writes the same
+// time series, to the last digit, as an uninterrupted 0.3 s run, while the material is still
+// running down the ramp (the front moves), so the contact history in the checkpoint is exercised;
+// the checkpoints at 0.3 s are the same to the last bit.
 TEST_F(SimulateDem, PlaneRestartContinuesTheSameSeries) {
   const std::string run = std::string("simulate cases/inclined_plane_29_5.toml --solver dem -q") + kTwin +
                           " --set chute.bin_length=100mm --set chute.bin_height=0.16m --set chute.fill_height=80mm"
@@ -86,6 +147,7 @@ TEST_F(SimulateDem, PlaneRestartContinuesTheSameSeries) {
   const std::string whole = slurp(dir_ / "whole/timeseries.csv");
   EXPECT_GT(std::count(whole.begin(), whole.end(), '\n'), 14);
   EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
+  expect_same_checkpoint(dir_ / "whole/checkpoint.h5", dir_ / "second/checkpoint.h5");
   // The flow was still running at the restart: the front advanced after 0.15 s.
   const auto json = nlohmann::json::parse(slurp(dir_ / "first/results.json"));
   const auto json2 = nlohmann::json::parse(slurp(dir_ / "second/results.json"));

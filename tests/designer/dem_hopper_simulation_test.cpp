@@ -86,8 +86,8 @@ TEST(DemHopperSimulation, TwinArchesAtTwentyMillimetres) {
 
 // Restart through the simulate path: one fill, a checkpoint 0.05 s after the opening; from it
 // one run to 0.12 s straight, and one interrupted at 0.08 s (checkpoint) and restarted to
-// 0.12 s: every particle's position, velocity and spin, the sink's book and the time series
-// are the same bits.
+// 0.12 s: every particle's position, velocity and spin, the sink's book, the blow-up guard's
+// energy book and the time series are the same bits.
 TEST(DemHopperSimulation, RestartContinuesBitIdentically) {
   const fs::path a = scratch("restart_a"), b = scratch("restart_b"), c = scratch("restart_c"),
                  d = scratch("restart_d");
@@ -104,6 +104,10 @@ TEST(DemHopperSimulation, RestartContinuesBitIdentically) {
   EXPECT_EQ(x.particles.angular_velocity, y.particles.angular_velocity);
   EXPECT_EQ(x.sink->removed_mass(), y.sink->removed_mass());
   EXPECT_GT(x.sink->removed_count(), 0u);  // particles went through the sink before the end
+  EXPECT_EQ(x.guard_initial_energy, y.guard_initial_energy);
+  EXPECT_EQ(x.guard_energy_floor, y.guard_energy_floor);
+  EXPECT_EQ(x.guard_gravity_work, y.guard_gravity_work);
+  EXPECT_EQ(x.guard_wall_speed, y.guard_wall_speed);
   EXPECT_EQ(straight.series.rows(), resumed.series.rows());
   for (const auto& p : {a, b, c, d}) fs::remove_all(p);
 }
