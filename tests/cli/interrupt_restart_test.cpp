@@ -71,9 +71,13 @@ int interrupted_runs_match(const fs::path& dir, const std::string& scene, const 
   const double wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(straight.exit_code, 0) << straight.err;
   int checkpointed = 0;
-  for (double fraction : fractions) {
-    const int wait = static_cast<int>(fraction * wall_ms);
-    const std::string cut = "cut" + std::to_string(wait), again = "again" + std::to_string(wait);
+  std::vector<double> tries(fractions);
+  // On a loaded machine the phases shift: without a checkpoint yet, try later moments too.
+  for (double late : {0.8, 0.9, 0.95}) tries.push_back(late);
+  for (std::size_t t = 0; t < tries.size(); ++t) {
+    if (t >= fractions.size() && checkpointed > 0) break;
+    const int wait = static_cast<int>(tries[t] * wall_ms);
+    const std::string cut = "cut" + std::to_string(t), again = "again" + std::to_string(t);
     const Interrupted r = interrupt_after(dir, split(scene + " -q --time " + time + " --out " + cut),
                                           std::chrono::milliseconds(wait));
     if (r.exit_code == 0) continue;  // finished before the signal: nothing to test at this wait
@@ -122,7 +126,7 @@ TEST_F(InterruptRestart, DemDrumAnyPhase) {
 // The DEM hopper twin: interrupted while filling and while discharging.
 TEST_F(InterruptRestart, DemHopperAnyPhase) {
   fs::copy_file(FEEDFLOW_TEST_DATA_DIR "/dem_hopper_twin.toml", dir_ / "dem_hopper_twin.toml");
-  EXPECT_GE(interrupted_runs_match(dir_, "simulate dem_hopper_twin.toml --solver dem", "0.3s", {0.2, 0.7, 0.9}), 1);
+  EXPECT_GE(interrupted_runs_match(dir_, "simulate dem_hopper_twin.toml --solver dem", "0.5s", {0.2, 0.7, 0.85}), 1);
 }
 
 // The CEL drum (20 mm cells) and the CEL chute: interrupted in the gravity phase and after.
