@@ -15,6 +15,7 @@
 #include "fullsim/common/scene_run.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/cel/small_hopper.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
@@ -48,13 +49,7 @@ DemEngine settling_block(double time_step = 0.0) {
 
 // The pilot hopper's 30 deg wedge, 60 mm outlet, 0.3 m bin filled 0.35 m, pine on 20 mm cells.
 cel::CelScene small_hopper_scene() {
-  Hopper h;
-  h.shape = "wedge";
-  h.semi_angle = 30.0 * kDegree;
-  h.outlet_width = 0.06;
-  h.fill_height = 0.35;
-  h.bin_width = 0.3;
-  return cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, 0.02);
+  return cel::make_hopper_scene(testing::small_wedge(), 8.5 * kDegree, {290.0, 0.7102}, 0.02);
 }
 
 SceneRunOptions block_options(const DemEngine& e, const fs::path& out, double duration) {

@@ -16,6 +16,7 @@
 #include "models/core/errors.hpp"
 #include "models/hypoplastic/hypoplastic_model.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/cel/small_hopper.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
@@ -74,13 +75,7 @@ StressOutcome dem_bed(double factor, double duration, ContactLawChoice law) {
 
 // The small CEL hopper (20 mm cells) for `duration` at `factor` x the default Courant number.
 StressOutcome cel_hopper(double factor, double duration, double cell) {
-  Hopper h;
-  h.shape = "wedge";
-  h.semi_angle = 30.0 * kDegree;
-  h.outlet_width = 0.06;
-  h.fill_height = 0.35;
-  h.bin_width = 0.3;
-  cel::CelScene scene = cel::make_hopper_scene(h, 8.5 * kDegree, {290.0, 0.7102}, cell);
+  cel::CelScene scene = cel::make_hopper_scene(testing::small_wedge(), 8.5 * kDegree, {290.0, 0.7102}, cell);
   scene.options.time_step.safety *= factor;
   scene.options.time_step.max_time_step *= factor;  // the cap too, or it hides the factor
   StressOutcome out;

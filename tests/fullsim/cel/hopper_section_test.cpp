@@ -12,6 +12,7 @@
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/cel/small_hopper.hpp"
 #include "tests/fullsim/cel/ledger_rate.hpp"
 
 namespace feedflow::cel {
@@ -20,17 +21,7 @@ namespace {
 const SceneMaterial kPine{290.0, 0.7102};
 HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
 
-// The small twin of scene_test.cpp: the pilot hopper's 30 deg wedge with a 0.3 m bin filled
-// 0.35 m above the apex, a 60 mm outlet, pine on steel (8.5 deg).
-Hopper small_wedge() {
-  Hopper h;
-  h.shape = "wedge";
-  h.semi_angle = 30.0 * kDegree;
-  h.outlet_width = 0.06;
-  h.fill_height = 0.35;
-  h.bin_width = 0.3;
-  return h;
-}
+using testing::small_wedge;  // the small twin of scene_test.cpp
 
 // cases/pilot_hopper.toml: 0.6 m bin, 0.68 m fill above the apex.
 Hopper pilot_wedge(double outlet) {
