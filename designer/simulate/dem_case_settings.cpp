@@ -26,4 +26,13 @@ void require_slab_depth(const Case& c, const DemSettings& settings, double slab_
                          format_number(2.0 * cutoff * 1e3, 3) + " mm for R = " + format_number(r * 1e3, 3) + " mm)");
 }
 
+double dem_snapshot_interval(const Case& c, double duration, double sample_interval) {
+  if (c.dem.snapshot_interval) return *c.dem.snapshot_interval;
+  constexpr double kMostSnapshots = 50.0;
+  const double samples = duration / (kMostSnapshots * sample_interval);  // per snapshot, at least
+  for (double decade = 1.0;; decade *= 10.0)
+    for (const double m : {1.0, 2.0, 5.0})
+      if (m * decade >= samples * (1.0 - 1e-9)) return m * decade * sample_interval;
+}
+
 }  // namespace feedflow

@@ -14,4 +14,12 @@ DemSettings dem_case_settings(const Case& c);
 // cutoffs of the settings' particles (a particle would meet its own image).
 void require_slab_depth(const Case& c, const DemSettings& settings, double slab_depth);
 
+// The time between particle snapshots of a DEM scene run [s]: the case's [dem]
+// snapshot_interval, or by default the shortest of 1, 2, 5, 10, 20, 50, ... sample intervals
+// (`sample_interval` [s], the rows of timeseries.csv) that gives at most 50 snapshots over the
+// planned run (`duration` [s] after the scene's origin): 20 to 50 frames, enough to follow the
+// flow in ParaView without filling the disk (~100 bytes a particle a snapshot), each on a row's
+// step; a run of fewer than 50 rows has a snapshot at every row.
+double dem_snapshot_interval(const Case& c, double duration, double sample_interval);
+
 }  // namespace feedflow

@@ -61,7 +61,9 @@ class DemChuteAdapter final : public SceneAdapter {
   }
 
   std::vector<TimeSeriesColumn> columns() const override {
-    return {{"time", "s"}, {"kinetic_energy", "J"}, {"particles", ""}, {"mass_off_ramp_end", "kg"}, {"front", "m"}};
+    // time: the simulation time, as the particle snapshots and the checkpoint have it.
+    return {{"time", "s"},     {"time_after_release", "s"}, {"kinetic_energy", "J"},
+            {"particles", ""}, {"mass_off_ramp_end", "kg"}, {"front", "m"}};
   }
 
   // The release time itself is kept: recomputing it from the step count rounds differently
@@ -74,12 +76,16 @@ class DemChuteAdapter final : public SceneAdapter {
     run.origin = run.sample_origin = release_;
     run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRunTime;
     run.sample_interval = kSampleInterval;
-    run.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
+    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
     run.sample = [this] {
       const DemEngine& e = scene_.engine();
       const OutletSink* sink = e.outlet_sink();
-      return std::vector<double>{e.time() - release_, e.kinetic_energy(), static_cast<double>(e.particles().size()),
-                                 sink ? sink->removed_mass() : 0.0, scene_.deposit().front};
+      return std::vector<double>{e.time(),
+                                 e.time() - release_,
+                                 e.kinetic_energy(),
+                                 static_cast<double>(e.particles().size()),
+                                 sink ? sink->removed_mass() : 0.0,
+                                 scene_.deposit().front};
     };
     if (!request_.end_time)
       run.stop = [this](const TimeSeries&) {

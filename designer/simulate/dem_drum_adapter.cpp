@@ -79,9 +79,16 @@ class DemDrumAdapter final : public SceneAdapter {
   }
 
   std::vector<TimeSeriesColumn> columns() const override {
-    return {{"time", "s"},             {"dynamic_angle_of_repose", "deg"}, {"surface_fit_valid", ""},
-            {"airborne_fraction", ""}, {"over_top_fraction", ""},          {"solid_body_fraction", ""},
-            {"shell_speed_ratio", ""}, {"kinetic_energy", "J"}};
+    // time: the simulation time, as the particle snapshots and the checkpoint have it.
+    return {{"time", "s"},
+            {"time_after_start", "s"},
+            {"dynamic_angle_of_repose", "deg"},
+            {"surface_fit_valid", ""},
+            {"airborne_fraction", ""},
+            {"over_top_fraction", ""},
+            {"solid_body_fraction", ""},
+            {"shell_speed_ratio", ""},
+            {"kinetic_energy", "J"}};
   }
 
   void restore(const Hdf5File& f) override {
@@ -95,13 +102,19 @@ class DemDrumAdapter final : public SceneAdapter {
     run.origin = run.sample_origin = scene_.rotation_start();
     run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRotation;
     run.sample_interval = kSampleInterval;
-    run.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
+    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
     run.sample = [this] {
       const DrumSample s = scene_.sample();
       watch_.add(s);
-      return std::vector<double>{s.time, s.angle / kDegree, s.valid ? 1.0 : 0.0, s.state.airborne_fraction,
-                                 s.state.over_top_fraction, s.state.solid_body_fraction,
-                                 s.state.shell_speed_ratio, s.kinetic_energy};
+      return std::vector<double>{scene_.engine().time(),
+                                 s.time,
+                                 s.angle / kDegree,
+                                 s.valid ? 1.0 : 0.0,
+                                 s.state.airborne_fraction,
+                                 s.state.over_top_fraction,
+                                 s.state.solid_body_fraction,
+                                 s.state.shell_speed_ratio,
+                                 s.kinetic_energy};
     };
     if (!request_.end_time)  // a given --time is run to its end
       run.stop = [this](const TimeSeries&) {

@@ -3,7 +3,8 @@
 // turning end plates) rain-filled to the fill line and settled, then the shell turning; sampled
 // every 20 ms (the surface angle, the bed state); stopped once the mean angle of the last two
 // windows agrees within 1 deg (unless --time is given); measured: the dynamic angle of repose
-// with a 2 SD band and the regime from the measured bed state.
+// with a 2 SD band and the regime from the measured bed state. Particle snapshots by default
+// 20-50 over the run (dem_snapshot_interval), each on a row of the series.
 #include <memory>
 
 #include "designer/simulate/scene_adapter.hpp"

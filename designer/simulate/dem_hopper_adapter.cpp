@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/dem_hopper_scene.hpp"
 #include "designer/simulate/hopper_discharge.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
@@ -52,6 +53,7 @@ class DemHopperAdapter final : public SceneAdapter {
   }
 
   std::vector<TimeSeriesColumn> columns() const override {
+    // time: the simulation time, as the particle snapshots and the checkpoint have it.
     return {{"time", "s"},          {"time_after_opening", "s"}, {"discharged_mass", "kg"},
             {"particles_in_domain", ""}, {"mass_in_domain", "kg"},    {"kinetic_energy", "J"}};
   }
@@ -69,7 +71,8 @@ class DemHopperAdapter final : public SceneAdapter {
     run.origin = run.sample_origin = scene_.opening_time;
     run.duration = request_.end_time.value_or(scene_.default_duration);
     run.sample_interval = kSampleInterval;
-    run.snapshot_interval = scene_.snapshot_interval;
+    run.snapshot_interval =
+        dem_snapshot_interval(request_.case_data, run.duration, kSampleInterval);
     run.sample = [this] {
       const DemEngine& e = *engine_;
       const double t_open = scene_.opening_time;

@@ -25,7 +25,6 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
   if (!h.slot_length) throw InputError(c.file, "hopper.slot_length", "the wedge needs its slot length");
   s.slot_length = *h.slot_length;
   s.seed = static_cast<std::uint64_t>(c.dem.random_seed.value_or(1.0));
-  s.snapshot_interval = c.dem.snapshot_interval.value_or(0.0);
   if (c.dem.end_time) s.default_duration = *c.dem.end_time;
   return s;
 }

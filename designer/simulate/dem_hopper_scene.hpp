@@ -23,7 +23,6 @@ struct DemHopperScene {
   double slot_length = 0.0;    // the real out-of-plane length [m]
   int bands = 10;              // initial-height bands for the flow pattern
   std::uint64_t seed = 1;
-  double snapshot_interval = 0.0;  // [s]; 0: none
   double default_duration = 20.0;  // [s] after the opening when neither --time nor [dem] says
 
   // Known once filled (or restored):

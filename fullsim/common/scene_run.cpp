@@ -63,11 +63,11 @@ void write_checkpoint(const Stepper& stepper, const std::filesystem::path& path,
   }
 }
 
-// The first snapshot time after the current one: a multiple of `interval` from time 0.
-double next_snapshot_after(const Stepper& stepper, double interval) {
-  double m = std::floor(stepper.time() / interval + 1e-9) + 1.0;
-  while (stepper.reached(m * interval)) m += 1.0;
-  return m * interval;
+// The first snapshot time after the current one: a multiple of `interval` from `origin`.
+double next_snapshot_after(const Stepper& stepper, double origin, double interval) {
+  double m = std::floor((stepper.time() - origin) / interval + 1e-9) + 1.0;
+  while (stepper.reached(origin + m * interval)) m += 1.0;
+  return origin + m * interval;
 }
 
 }  // namespace
@@ -120,8 +120,16 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   const double last_sample = whole_samples ? in_samples * sample_every : 0.0;
   const double on_grid = stepper.whole_steps(o.duration, StepRounding::up);
   const double run_for = last_sample > on_grid * (1.0 + 1e-9) ? last_sample : on_grid;  // not for round-off
+  // Snapshots count from the sample origin; an interval of whole sample intervals is planned as
+  // that many sample steps, so each snapshot is taken on the step of a row (a snapshot's time in
+  // ParaView is a time in the series).
+  const double per_sample = o.sample_interval > 0.0 ? o.snapshot_interval / o.sample_interval : 0.0;
+  const bool on_rows =
+      per_sample >= 1.0 && std::abs(per_sample - std::round(per_sample)) < 1e-9 * per_sample;
   const double snapshot_every =
-      o.snapshot_interval > 0.0 ? stepper.whole_steps(o.snapshot_interval, StepRounding::nearest) : 0.0;
+      o.snapshot_interval <= 0.0 ? 0.0
+      : on_rows                  ? std::round(per_sample) * sample_every
+                                 : stepper.whole_steps(o.snapshot_interval, StepRounding::nearest);
   const auto origin = [&] { return o.origin ? o.origin : stepper.event_started_at(); };
   const auto end_time = [&] {
     const auto t0 = origin();
@@ -145,7 +153,7 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   if (snapshot_every > 0.0) {
     snapshots = stepper.snapshot_writer(o.out, restarted);
     if (!restarted) snapshots->write();
-    snapshot_at = next_snapshot_after(stepper, snapshot_every);
+    snapshot_at = next_snapshot_after(stepper, o.sample_origin, snapshot_every);
   }
   log << "run: from t = " << seconds(stepper.time()) << " to " << seconds(run_for) << " after the "
       << (origin() ? "origin at t = " + seconds(*origin()) : std::string("scene's event"))
@@ -175,7 +183,7 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
     if (snapshots && stepper.reached(snapshot_at)) {
       const auto t = Clock::now();
       snapshots->write();
-      snapshot_at = next_snapshot_after(stepper, snapshot_every);
+      snapshot_at = next_snapshot_after(stepper, o.sample_origin, snapshot_every);
       snapshot_seconds += seconds_since(t);
     }
     take_due_samples();

@@ -9,8 +9,9 @@
 // The plan line, the end and the performance block go to the log sink; nothing is printed.
 //
 // Sample and snapshot times and the end are planned on the stepper's step grid
-// (Stepper::whole_steps), counted from fixed origins (samples: `sample_origin`; snapshots: 0),
-// so a restarted run samples, writes and stops at the same steps as an uninterrupted one.
+// (Stepper::whole_steps), counted from a fixed origin (`sample_origin`, for samples and
+// snapshots), so a restarted run samples, writes and stops at the same steps as an
+// uninterrupted one. A snapshot interval of whole sample intervals falls on the rows' steps.
 //
 //   SceneRunOptions o;  o.out = folder;  o.duration = 5.0;  o.columns = {...};
 //   o.sample = [&] { return std::vector<double>{engine.time(), ...}; };
@@ -45,7 +46,7 @@ struct SceneRunOptions {
   double sample_origin = 0.0;           // [s]
   bool sample_at_origin = true;
   double sample_interval = 0.01;        // [s] between rows
-  double snapshot_interval = 0.0;       // [s] between field snapshots; <= 0: none
+  double snapshot_interval = 0.0;       // [s] between snapshots, from sample_origin; <= 0: none
   std::vector<TimeSeriesColumn> columns;
   std::function<std::vector<double>()> sample;  // one row, taken at the sample times
   // Asked after every row: a non-empty reason ends the run there ("converged: ...").

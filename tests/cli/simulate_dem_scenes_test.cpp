@@ -6,6 +6,8 @@
 
 #include <cstring>
 #include <fstream>
+#include <regex>
+#include <sstream>
 #include <tuple>
 
 #include <algorithm>
@@ -86,6 +88,45 @@ void expect_same_checkpoint(const fs::path& straight, const fs::path& restarted)
   EXPECT_TRUE(same_bits(a.guard_wall_speed, b.guard_wall_speed)) << "/guard wall_speed";
 }
 
+// The times of the snapshots an XDMF sidecar lists (what ParaView shows) [s].
+std::vector<double> xdmf_times(const fs::path& sidecar) {
+  const std::string text = slurp(sidecar);
+  const std::regex time(R"re(<Time Value="([^"]+)"/>)re");
+  std::vector<double> times;
+  for (std::sregex_iterator it(text.begin(), text.end(), time), end; it != end; ++it)
+    times.push_back(std::stod((*it)[1]));
+  return times;
+}
+
+// One column of a timeseries.csv, found by its header ("time [s]"); empty when there is none.
+std::vector<double> csv_column(const fs::path& csv, const std::string& header) {
+  auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  std::istringstream in(slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  const auto names = cells(line);
+  const auto column =
+      static_cast<std::size_t>(std::find(names.begin(), names.end(), header) - names.begin());
+  std::vector<double> values;
+  while (column < names.size() && std::getline(in, line))
+    values.push_back(std::stod(cells(line).at(column)));
+  return values;
+}
+
+// The sidecar of a restarted run's snapshots (particles_from_step_<step>.xdmf) in `folder`.
+fs::path continued_sidecar(const fs::path& folder) {
+  for (const auto& f : fs::directory_iterator(folder))
+    if (f.path().filename().string().starts_with("particles_from_step_") &&
+        f.path().extension() == ".xdmf")
+      return f.path();
+  return {};
+}
+
 const char* kTwin =
     " --set dem.slab_depth=18mm --set dem.normal_law=hertz --set material.dem.particle.radius=3mm";
 
@@ -114,11 +155,41 @@ TEST_F(SimulateDem, DrumWritesRungL3AngleAndRegime) {
   EXPECT_TRUE(fs::exists(dir_ / "run/checkpoint.h5"));
 }
 
+// Without a [dem] snapshot_interval the drum writes particle snapshots (20-50 over the run; every
+// 20 ms row for 0.4 s), and they share the time series' axis: each snapshot's time in
+// particles.xdmf is the time of a row of timeseries.csv (the same step), the first at the first
+// row (the shell's start), the last at the checkpoint's time; the time column is the simulation
+// time (the start after the fill, not 0), time_after_start counts from the start.
+TEST_F(SimulateDem, DrumSnapshotsAndSeriesShareOneTimeAxis) {
+  const auto r = run_feedflow(
+      std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q --time 0.4s") + kTwin +
+          " --out run",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(dir_ / "run/particles.h5"));
+  const std::vector<double> snapshots = xdmf_times(dir_ / "run/particles.xdmf");
+  const std::vector<double> time = csv_column(dir_ / "run/timeseries.csv", "time [s]");
+  const std::vector<double> after = csv_column(dir_ / "run/timeseries.csv", "time_after_start [s]");
+  ASSERT_EQ(time.size(), 21u);
+  ASSERT_EQ(after.size(), time.size());
+  EXPECT_EQ(snapshots.size(), 21u);
+  for (const double t : snapshots)
+    EXPECT_NE(std::find(time.begin(), time.end(), t), time.end())
+        << "snapshot at " << t << " s is on no row";
+  ASSERT_FALSE(snapshots.empty());
+  EXPECT_EQ(snapshots.front(), time.front());
+  EXPECT_EQ(snapshots.back(), feedflow::read_dem_checkpoint(dir_ / "run/checkpoint.h5").time);
+  EXPECT_GT(time.front(), 0.1);  // the fill took simulated time before the shell started
+  EXPECT_EQ(after.front(), 0.0);
+  for (std::size_t k = 0; k < time.size(); ++k)
+    EXPECT_NEAR(time[k] - after[k], time.front(), 1e-9) << "row " << k;
+}
+
 // Restart: a drum run stopped at 0.4 s of rotation and continued from its checkpoint to 0.8 s
 // writes the same time series, to the last digit, as an uninterrupted 0.8 s run (the angle, the
-// bed state and the kinetic energy at every sample), and ends with the same checkpoint, bit for
-// bit, including the blow-up guard's energy floor (which the turning bed, taller at the restart
-// than when the shell started, must not move).
+// bed state and the kinetic energy at every sample), ends with the same checkpoint, bit for bit,
+// including the blow-up guard's energy floor (which the turning bed, taller at the restart than
+// when the shell started, must not move), and writes the same particle snapshots after 0.4 s.
 TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
   const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") + kTwin;
   ASSERT_EQ(run_feedflow(run + " --time 0.8s --out whole", dir_).exit_code, 0);
@@ -129,6 +200,14 @@ TEST_F(SimulateDem, DrumRestartContinuesTheSameSeries) {
   EXPECT_GT(std::count(whole.begin(), whole.end(), '\n'), 30);
   EXPECT_EQ(slurp(dir_ / "second/timeseries.csv"), whole);
   expect_same_checkpoint(dir_ / "whole/checkpoint.h5", dir_ / "second/checkpoint.h5");
+  // The continued run's snapshots (written by default) are the uninterrupted run's after 0.4 s.
+  const std::vector<double> straight = xdmf_times(dir_ / "whole/particles.xdmf");
+  const std::vector<double> continued = xdmf_times(continued_sidecar(dir_ / "second"));
+  ASSERT_FALSE(continued.empty());
+  ASSERT_GT(straight.size(), continued.size());
+  EXPECT_EQ(continued,
+            std::vector<double>(straight.end() - static_cast<std::ptrdiff_t>(continued.size()),
+                                straight.end()));
 }
 
 // Restart on the inclined plane: a small plane (~700 rain-filled spheres, 100 x 80 mm fill, 50 mm

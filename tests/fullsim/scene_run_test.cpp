@@ -6,7 +6,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
+#include <regex>
 #include <sstream>
 
 #include "fullsim/cel/cel_scene_run.hpp"
@@ -141,6 +144,39 @@ TEST(SceneRun, UserStepKeepsTheLastSample) {
   ASSERT_EQ(r.series.rows().size(), 21u);
   EXPECT_NEAR(r.series.rows().back()[0], 20 * 101 * e.time_step(), 1e-3 * e.time_step());
   EXPECT_EQ(e.steps(), 20 * 101);
+  fs::remove_all(dir);
+}
+
+// The times of the snapshots an XDMF sidecar lists (what ParaView shows) [s].
+std::vector<double> xdmf_times(const fs::path& sidecar) {
+  std::ifstream in(sidecar);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::regex time(R"re(<Time Value="([^"]+)"/>)re");
+  std::vector<double> times;
+  for (std::sregex_iterator it(text.begin(), text.end(), time), end; it != end; ++it)
+    times.push_back(std::stod((*it)[1]));
+  return times;
+}
+
+// Snapshots count from the sample origin, and an interval of whole sample intervals falls on
+// the rows' steps: with a user step that does not divide 1 ms (101 steps a row, 503 for 5 ms
+// on their own) and an origin 37 steps into the run, every snapshot's time is a row's time and
+// there is one every 5 rows, the first at the origin.
+TEST(SceneRun, SnapshotsFallOnRowsFromTheSampleOrigin) {
+  const fs::path dir = scratch("snapshot_rows");
+  DemEngine e = settling_block(1e-3 / 100.6);
+  std::ostringstream log;
+  e.prepare(log);
+  e.run_steps(37);
+  SceneRunOptions o = block_options(e, dir, 0.02);
+  o.origin = o.sample_origin = e.time();
+  o.snapshot_interval = 5e-3;
+  const SceneRunResult r = run_scene(e, o);
+  const std::vector<double> times = xdmf_times(dir / "particles.xdmf");
+  ASSERT_EQ(r.series.rows().size(), 21u);
+  ASSERT_EQ(times.size(), 5u);  // at 0, 5, 10, 15 and 20 ms after the origin
+  for (std::size_t k = 0; k < times.size(); ++k)
+    EXPECT_EQ(times[k], r.series.rows()[5 * k][0]) << "snapshot " << k;
   fs::remove_all(dir);
 }
 
