@@ -43,10 +43,7 @@ DemEngine settling_block(double time_step = 0.0) {
   settings.requested_time_step = time_step;
   DemEngine e(settings, SimulationBox{lower, upper, {false, false, false}}, p);
   e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
-  e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
-  e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
-  e.add_wall(Wall::plane("y-", lower, Vec3::UnitY()));
-  e.add_wall(Wall::plane("y+", upper, -Vec3::UnitY()));
+  add_side_walls(e, lower, upper);
   return e;
 }
 

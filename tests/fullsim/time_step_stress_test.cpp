@@ -53,10 +53,7 @@ StressOutcome dem_bed(double factor, double duration, ContactLawChoice law) {
   s.force_time_step = factor > 1.0;
   DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
   e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()));
-  e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
-  e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
-  e.add_wall(Wall::plane("y-", lower, Vec3::UnitY()));
-  e.add_wall(Wall::plane("y+", upper, -Vec3::UnitY()));
+  add_side_walls(e, lower, upper);
   e.add_wall(Wall::plane("top", upper, -Vec3::UnitZ()));
   StressOutcome out;
   try {

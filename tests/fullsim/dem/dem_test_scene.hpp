@@ -52,12 +52,17 @@ inline void add_lattice(ParticleStore& p, const Vec3& origin, int nx, int ny, in
       }
 }
 
-// The six walls of the box [lower, upper] facing inwards.
-inline void add_box_walls(DemEngine& e, const Vec3& lower, const Vec3& upper) {
+// The four side walls of the box [lower, upper] facing inwards (x-, x+, y-, y+).
+inline void add_side_walls(DemEngine& e, const Vec3& lower, const Vec3& upper) {
   e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
   e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
   e.add_wall(Wall::plane("y-", lower, Vec3::UnitY()));
   e.add_wall(Wall::plane("y+", upper, -Vec3::UnitY()));
+}
+
+// The six walls of the box [lower, upper] facing inwards.
+inline void add_box_walls(DemEngine& e, const Vec3& lower, const Vec3& upper) {
+  add_side_walls(e, lower, upper);
   e.add_wall(Wall::plane("z-", lower, Vec3::UnitZ()));
   e.add_wall(Wall::plane("z+", upper, -Vec3::UnitZ()));
 }

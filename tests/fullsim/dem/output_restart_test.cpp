@@ -47,10 +47,7 @@ DemEngine make_restart_scene(const DemSettings& s) {
   const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.02);
   DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
   e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
-  e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
-  e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
-  e.add_wall(Wall::plane("y-", lower, Vec3::UnitY()));
-  e.add_wall(Wall::plane("y+", upper, -Vec3::UnitY()));
+  add_side_walls(e, lower, upper);
   // Around the top corner sphere of the lattice (centre (2, 2, 1.6 + 3 x 2.95) mm).
   e.set_outlet_sink(OutletSink::box(Vec3(1.5e-3, 1.5e-3, 10e-3), Vec3(2.5e-3, 2.5e-3, 11e-3)));
   return e;
@@ -132,10 +129,7 @@ TEST(DemOutputRestart, RestartKeepsTheGuardsEnergyBook) {
     const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.03);
     DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
     e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
-    e.add_wall(Wall::plane("x-", lower, Vec3::UnitX()));
-    e.add_wall(Wall::plane("x+", upper, -Vec3::UnitX()));
-    e.add_wall(Wall::plane("y-", lower, Vec3::UnitY()));
-    e.add_wall(Wall::plane("y+", upper, -Vec3::UnitY()));
+    add_side_walls(e, lower, upper);
     return e;
   };
   std::ostringstream plan;
