@@ -106,8 +106,8 @@ int run_simulate(const SimulateArguments& args) {
     bool checkpointed = false;
     for (const auto& f : written) checkpointed = checkpointed || f.filename() == "checkpoint.h5";
     std::cerr << (checkpointed ? "feedflow: interrupted; continue with --restart and the checkpoint listed above\n"
-                               : "feedflow: interrupted before a checkpoint could be written (e.g. while "
-                                 "filling); run again\n");
+                               : "feedflow: interrupted before a checkpoint could be written (before "
+                                 "the fill's first batch was in); run again\n");
     return kExitInterrupted;
   }
   return kExitOk;

@@ -42,8 +42,15 @@ class DemChuteAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the bin"; }
 
+  bool restore_fill(const Hdf5File& f) override {
+    if (!RainFill::saved_in(f)) return false;
+    scene_.restore_fill(f);
+    return fill_restored_ = true;
+  }
+  bool save_fill(Hdf5File& f) const override { return scene_.save_fill(f); }
+
   Stepper* build(std::ostream& log, ProgressSink& progress) override {
-    const bool fresh = request_.restart.empty();
+    const bool fresh = fills();
     log << "inclined plane scene plan: periodic slab " << scene_.spec().slab_depth * 1e3 << " mm across the ramp "
         << "(stands for the " << chute_.width * 1e3 << " mm ramp; no lateral spill), ramp frame with tilted "
         << "gravity, bin on the ramp's upper end filled by "
@@ -158,7 +165,7 @@ class DemChuteAdapter final : public SceneAdapter {
     a.push_back("the bin stands on the upper end of the ramp with its walls normal to it (the seed gives no drawing)");
     a.push_back("no-slip ramp as a saw-tooth mesh (45 deg faces, period 2R, height R) standing for the glued chips; "
                 "the deposit height is measured above the teeth's crests");
-    a.push_back(request_.restart.empty()
+    a.push_back(fills()
                     ? "filling by " + scene_.rain().describe() + " (the fill height), against the closed gate: " +
                           scene_.fill_report().summary()
                     : std::string("filling by rain-fall against the closed gate, settled and trimmed to the fill "
@@ -166,10 +173,14 @@ class DemChuteAdapter final : public SceneAdapter {
   }
 
  private:
+  // This run fills the bin (a new run, or the rest of a fill from its checkpoint).
+  bool fills() const { return request_.restart.empty() || fill_restored_; }
+
   const SimulationRequest& request_;
   const Chute& chute_;
   DemSettings settings_;
   InclinedPlaneScene scene_;
+  bool fill_restored_ = false;
   double release_ = 0.0;
   double duration_ = 0.0;
 };

@@ -60,8 +60,15 @@ class DemDrumAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the drum"; }
 
+  bool restore_fill(const Hdf5File& f) override {
+    if (!RainFill::saved_in(f)) return false;
+    scene_.restore_fill(f);
+    return fill_restored_ = true;
+  }
+  bool save_fill(Hdf5File& f) const override { return scene_.save_fill(f); }
+
   Stepper* build(std::ostream& log, ProgressSink& progress) override {
-    const bool fresh = request_.restart.empty();
+    const bool fresh = fills();
     const auto& spec = scene_.spec();
     log << "drum scene plan: "
         << (spec.slab_depth ? "periodic axial slab " + format_number(*spec.slab_depth * 1e3, 3) + " mm deep (no end walls; stands for the " +
@@ -162,7 +169,7 @@ class DemDrumAdapter final : public SceneAdapter {
                       "angle or regime; run longer than " + format_number(watch_.spin_up() + 2 * watch_.window(), 3) + " s");
     if (run.end == RunEnd::duration && !request_.end_time)
       notes.push_back("the angle had not converged within " + format_number(duration_, 3) + " s of rotation");
-    if (request_.restart.empty() && scene_.trimmed() == 0)
+    if (fills() && scene_.trimmed() == 0)
       notes.push_back("the settled packing fell short of the fill line: the bed is below the asked fill");
     if (!scene_.engine().spring_warning().empty()) notes.push_back(scene_.engine().spring_warning());
   }
@@ -207,7 +214,7 @@ class DemDrumAdapter final : public SceneAdapter {
     } else {
       a.push_back("full 3D drum with Table 2 P-W friction 0.2 on the shell and on the end plates turning with it");
     }
-    a.push_back(request_.restart.empty()
+    a.push_back(fills()
                     ? "filling by " + scene_.rain().describe() + " (the fill line): " + scene_.fill_report().summary()
                     : std::string("filling by rain-fall, settled and trimmed to the fill line (done by the run the "
                                   "checkpoint continues)"));
@@ -216,11 +223,15 @@ class DemDrumAdapter final : public SceneAdapter {
   }
 
  private:
+  // This run fills the drum (a new run, or the rest of a fill from its checkpoint).
+  bool fills() const { return request_.restart.empty() || fill_restored_; }
+
   const SimulationRequest& request_;
   const Drum& drum_;
   DemSettings settings_;
   DrumScene scene_;
   DrumAngleWatch watch_;
+  bool fill_restored_ = false;
   double duration_ = 0.0;
 };
 

@@ -45,11 +45,17 @@ class DemHopperAdapter final : public SceneAdapter {
 
   std::string what() const override { return "the hopper"; }
 
+  bool restore_fill(const Hdf5File& f) override {
+    if (!RainFill::saved_in(f)) return false;
+    restore_hopper_fill(scene_, engine(), f);
+    return fill_restored_ = true;
+  }
+  bool save_fill(Hdf5File& f) const override { return engine_ && save_hopper_fill(scene_, *engine_, f); }
+
   Stepper* build(std::ostream& log, ProgressSink& progress) override {
     describe_hopper_scene(scene_, log);
-    engine_.emplace(hopper_scene_structure(scene_));
-    if (!request_.restart.empty()) return &*engine_;
-    return fill_hopper_scene(scene_, *engine_, &progress, log) ? &*engine_ : nullptr;
+    if (!request_.restart.empty() && !fill_restored_) return &engine();
+    return fill_hopper_scene(scene_, engine(), &progress, log) ? &engine() : nullptr;
   }
 
   std::vector<TimeSeriesColumn> columns() const override {
@@ -168,6 +174,12 @@ class DemHopperAdapter final : public SceneAdapter {
   }
 
  private:
+  // The slab's structure (walls, wedge, sink): filled by build, or restored into.
+  DemEngine& engine() {
+    if (!engine_) engine_.emplace(hopper_scene_structure(scene_));
+    return *engine_;
+  }
+
   // The order of the bands: of the particles in the order they left, and of those left in
   // the hopper.
   FlowOrder layer_order() const {
@@ -214,7 +226,8 @@ class DemHopperAdapter final : public SceneAdapter {
 
   const SimulationRequest& request_;
   DemHopperScene scene_;
-  std::optional<DemEngine> engine_;
+  std::optional<DemEngine> engine_;  // made at the first use
+  bool fill_restored_ = false;
   HopperDischarge discharge_;
   SpeedProfileSeries flow_line_;  // sampled on the rows' time axis (after the opening)
 };

@@ -77,10 +77,19 @@ DemEngine hopper_scene_structure(const DemHopperScene& s) {
   return engine;
 }
 
+bool save_hopper_fill(const DemHopperScene& s, const DemEngine& engine, Hdf5File& file) {
+  return s.rain_fill && s.rain_fill->save(engine, file);
+}
+
+void restore_hopper_fill(DemHopperScene& s, DemEngine& engine, const Hdf5File& file) {
+  s.rain_fill.emplace(s.slab.rain(s.density, s.bands, s.seed));
+  s.rain_fill->restore(engine, file);
+}
+
 bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, ProgressSink* progress, std::ostream& log) {
-  RainFillSettings rain = s.slab.rain(s.density, s.bands, s.seed);
-  rain.progress = progress;
-  s.fill = rain_fill(engine, rain, log);
+  if (!s.rain_fill) s.rain_fill.emplace(s.slab.rain(s.density, s.bands, s.seed));
+  s.rain_fill->set_progress(progress);
+  s.fill = s.rain_fill->run(engine, log);
   if (s.fill.interrupted) return false;
   // The gate goes at the next step; the bands are frozen as they are now.
   s.opening_time = engine.time();

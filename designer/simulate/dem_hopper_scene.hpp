@@ -29,6 +29,7 @@ struct DemHopperScene {
   double opening_time = 0.0;   // [s] the gate is removed
   long opening_step = 0;
   FillReport fill;             // counts and masses of the fill (a restored run: those saved)
+  std::optional<RainFill> rain_fill;  // the fill under way (stopped by Ctrl-C) or done
   std::vector<std::uint32_t> initial_ids;  // at the opening, with their bands
   std::vector<double> initial_layers;
 
@@ -42,9 +43,14 @@ DemHopperScene hopper_scene_from_case(const Case& c);
 // The engine with the slab's walls, wedge mesh and sink, and no particles (a restart restores
 // them from the checkpoint).
 DemEngine hopper_scene_structure(const DemHopperScene& scene);
-// A new run: the structure rain-filled, settled and trimmed, and the gate opened (at the
-// settled time). False when Ctrl-C stopped the fill (nothing to continue from).
+// A new run: the structure rain-filled, settled and trimmed (or the rest of a fill restored by
+// restore_hopper_fill), and the gate opened (at the settled time). False when Ctrl-C stopped
+// the fill.
 bool fill_hopper_scene(DemHopperScene& scene, DemEngine& engine, ProgressSink* progress, std::ostream& log);
+// A fill stopped by Ctrl-C: its checkpoint into `file` (false: nothing to continue from), and
+// back into a scene and an engine built from the same case.
+bool save_hopper_fill(const DemHopperScene& scene, const DemEngine& engine, Hdf5File& file);
+void restore_hopper_fill(DemHopperScene& scene, DemEngine& engine, const Hdf5File& file);
 // The scene's plan lines.
 void describe_hopper_scene(const DemHopperScene& scene, std::ostream& log);
 

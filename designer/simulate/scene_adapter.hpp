@@ -20,11 +20,19 @@ class SceneAdapter {
 
   // "the hopper", "the drum": what a fill interrupted by Ctrl-C was filling.
   virtual std::string what() const = 0;
-  // Builds the scene. A new run: up to its origin (a DEM fill rained in, settled and trimmed,
-  // the gate opened). A restart: its structure only (walls, meshes, grid), which the caller
-  // restores from the checkpoint. Returns null when Ctrl-C stopped the fill (nothing to
-  // continue from). Writes the scene's plan to `log`, the fill's progress to `progress`.
+  // A restart from a checkpoint of a fill stopped by Ctrl-C (save_fill): reads the fill's
+  // state (before build, which then finishes the fill) and returns true; false when the file
+  // holds no fill under way (a checkpoint of the run, restored after build).
+  virtual bool restore_fill(const Hdf5File&) { return false; }
+  // Builds the scene. A new run: up to its origin (a DEM fill rained in, or the rest of a
+  // restored one, settled and trimmed, the gate opened). A restart of the run: its structure
+  // only (walls, meshes, grid), which the caller restores from the checkpoint. Returns null
+  // when Ctrl-C stopped the fill. Writes the scene's plan to `log`, the fill's progress to
+  // `progress`.
   virtual Stepper* build(std::ostream& log, ProgressSink& progress) = 0;
+  // After build returned null: the checkpoint of the fill under way into `file` (false:
+  // nothing to continue from, the fill had not begun).
+  virtual bool save_fill(Hdf5File&) const { return false; }
   // The columns of the scene's time series.
   virtual std::vector<TimeSeriesColumn> columns() const = 0;
   // A restart: the scene's own data from the checkpoint's /scene group (saved by the

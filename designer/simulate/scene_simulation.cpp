@@ -1,5 +1,7 @@
 #include "designer/simulate/scene_simulation.hpp"
 
+#include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "designer/design/verdict_builder.hpp"
@@ -25,11 +27,25 @@ void restoring(const SimulationRequest& request, F&& f) {
   }
 }
 
-SimulationOutcome interrupted_while_filling(const std::string& what) {
+// Ctrl-C stopped the fill: its checkpoint (with the case's identity) when the adapter can save
+// one, else a note that nothing can be continued.
+SimulationOutcome interrupted_while_filling(const SceneAdapter& adapter, const SimulationRequest& request,
+                                            const std::vector<InputValue>& identity) {
   SimulationOutcome out;
   out.end = SimulationEnd::interrupted;
   VerdictBuilder v;
-  v.note("interrupted while filling " + what + ": no checkpoint was written, run again");
+  const std::filesystem::path checkpoint = scene_checkpoint_path(request.out);
+  const bool saved = !request.out.empty() && write_whole_checkpoint(checkpoint, [&](Hdf5File& f) {
+    if (!adapter.save_fill(f)) return false;
+    save_restart_identity(identity, f);
+    return true;
+  });
+  if (saved) {
+    out.files.push_back(checkpoint);
+    v.note("interrupted while filling " + adapter.what() + ": the fill continues from the checkpoint");
+  } else {
+    v.note("interrupted while filling " + adapter.what() + " before its first batch was in: no checkpoint, run again");
+  }
   out.record.verdict = v.verdict();
   return out;
 }
@@ -40,25 +56,35 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   std::ostringstream discard;
   std::ostream& log = request.log ? *request.log : discard;
   TerminalProgress progress = TerminalProgress::for_terminal(!request.progress);
+  const std::vector<InputValue> identity = restart_identity(request.case_data, request.solver);
+  // A checkpoint of the fill is read before the build, which finishes the fill; one of the run
+  // after it (the build makes the structure it is restored into).
+  std::optional<Hdf5File> restart;
+  if (!request.restart.empty())
+    restoring(request, [&] {
+      restart.emplace(request.restart, Hdf5File::Mode::read);
+      check_restart_identity(identity, *restart);
+      if (adapter.restore_fill(*restart)) {
+        log << "continuing the fill from " << request.restart.string() << "\n";
+        restart.reset();
+      }
+    });
   Stepper* stepper = adapter.build(log, progress);
-  if (!stepper) return interrupted_while_filling(adapter.what());
+  if (!stepper) return interrupted_while_filling(adapter, request, identity);
 
   SceneRunOptions run;
   run.columns = adapter.columns();
   run.out = request.out;
-  run.restart = request.restart;
   run.log = request.log;
   run.progress = &progress;
-  const std::vector<InputValue> identity = restart_identity(request.case_data, request.solver);
-  if (!request.restart.empty())
+  if (restart) {
+    run.restart = request.restart;
     restoring(request, [&] {
-      const Hdf5File f(request.restart, Hdf5File::Mode::read);
-      check_restart_identity(identity, f);
-      run.previous = restore_scene_run(*stepper, f, run.columns);
-      adapter.restore(f);
+      run.previous = restore_scene_run(*stepper, *restart, run.columns);
+      adapter.restore(*restart);
     });
-  if (!request.restart.empty())
     log << "restarted from " << request.restart.string() << " at t = " << stepper->time() << " s\n";
+  }
   adapter.plan(run);
   run.save_scene = [&identity, save = std::move(run.save_scene)](Hdf5File& f) {
     save_restart_identity(identity, f);

@@ -10,16 +10,14 @@ namespace feedflow::cel {
 
 CelFieldSnapshots::CelFieldSnapshots(std::filesystem::path hdf5_file, bool append)
     : file_(std::move(hdf5_file)) {
-  if (append && std::filesystem::exists(file_)) {
+  exists_ = append && std::filesystem::exists(file_);
+  if (exists_) {
     Hdf5File f(file_, Hdf5File::Mode::read);
     if (f.exists("/snapshots"))
       for (const auto& name : f.members("/snapshots")) {
         groups_.push_back("/snapshots/" + name);
         times_.push_back(f.double_attribute(groups_.back(), "time"));
       }
-  } else {
-    Hdf5File f(file_, Hdf5File::Mode::create);
-    f.close();
   }
 }
 
@@ -47,7 +45,9 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   char name[48];
   std::snprintf(name, sizeof name, "/snapshots/step_%09ld", solver.step_count());
   const std::string group = name;
-  Hdf5File f(file_, Hdf5File::Mode::append);
+  // The file is made with the first snapshot: a run that ends before it leaves neither file.
+  Hdf5File f(file_, exists_ ? Hdf5File::Mode::append : Hdf5File::Mode::create);
+  exists_ = true;
   if (f.exists(group)) return;  // a restart that lands on a written step
   f.create_group(group);
   f.set_attribute(group, "time", solver.time());

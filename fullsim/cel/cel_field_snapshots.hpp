@@ -15,7 +15,8 @@ namespace feedflow::cel {
 
 class CelFieldSnapshots {
  public:
-  // `append`: keep the snapshots already in the file (a restarted run).
+  // `append`: keep the snapshots already in the file (a restarted run); else the first write
+  // creates (truncates) the file and its sidecar.
   CelFieldSnapshots(std::filesystem::path hdf5_file, bool append);
   void write(const CelSolver& solver);
   const std::filesystem::path& file() const { return file_; }
@@ -25,6 +26,7 @@ class CelFieldSnapshots {
  private:
   void write_sidecar(const PlaneStrainGrid& grid) const;
   std::filesystem::path file_;
+  bool exists_ = false;  // the file is there to append to
   std::vector<double> times_;
   std::vector<std::string> groups_;
 };

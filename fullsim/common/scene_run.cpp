@@ -34,14 +34,10 @@ std::string column_names(const std::vector<TimeSeriesColumn>& columns) {
   return names;
 }
 
-// The stepper's state and the /scene group (series and the scene's own data), written whole:
-// a temporary beside the target, renamed over it.
+// The stepper's state and the /scene group (series and the scene's own data).
 void write_checkpoint(const Stepper& stepper, const std::filesystem::path& path,
                       const TimeSeries& series, const SceneRunOptions& o) {
-  namespace fs = std::filesystem;
-  const fs::path temporary = path.string() + ".tmp" + std::to_string(::getpid());
-  try {
-    Hdf5File f(temporary, Hdf5File::Mode::create);
+  write_whole_checkpoint(path, [&](Hdf5File& f) {
     stepper.write_checkpoint(f);
     f.create_group("/scene");
     f.set_attribute("/scene", "series_columns", column_names(series.columns()));
@@ -49,7 +45,30 @@ void write_checkpoint(const Stepper& stepper, const std::filesystem::path& path,
     for (const auto& r : series.rows()) rows.insert(rows.end(), r.begin(), r.end());
     if (!series.empty()) f.write("/scene/series", rows, {series.rows().size(), series.columns().size()}, "SI");
     if (o.save_scene) o.save_scene(f);
+    return true;
+  });
+}
+
+// The first snapshot time after the current one: a multiple of `interval` from `origin`.
+double next_snapshot_after(const Stepper& stepper, double origin, double interval) {
+  double m = std::floor((stepper.time() - origin) / interval + 1e-9) + 1.0;
+  while (stepper.reached(origin + m * interval)) m += 1.0;
+  return origin + m * interval;
+}
+
+}  // namespace
+
+bool write_whole_checkpoint(const std::filesystem::path& path, const std::function<bool(Hdf5File&)>& write) {
+  namespace fs = std::filesystem;
+  const fs::path temporary = path.string() + ".tmp" + std::to_string(::getpid());
+  try {
+    Hdf5File f(temporary, Hdf5File::Mode::create);
+    const bool keep = write(f);
     f.close();
+    if (!keep) {
+      fs::remove(temporary);
+      return false;
+    }
   } catch (const std::exception& e) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
@@ -61,16 +80,8 @@ void write_checkpoint(const Stepper& stepper, const std::filesystem::path& path,
     fs::remove(temporary, ec);
     throw std::runtime_error("cannot write the checkpoint " + path.string() + ": " + ec.message());
   }
+  return true;
 }
-
-// The first snapshot time after the current one: a multiple of `interval` from `origin`.
-double next_snapshot_after(const Stepper& stepper, double origin, double interval) {
-  double m = std::floor((stepper.time() - origin) / interval + 1e-9) + 1.0;
-  while (stepper.reached(origin + m * interval)) m += 1.0;
-  return origin + m * interval;
-}
-
-}  // namespace
 
 std::filesystem::path scene_checkpoint_path(const std::filesystem::path& folder) {
   return folder / "checkpoint.h5";
@@ -175,7 +186,7 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
       r.end = RunEnd::stopped;
       break;
     }
-    if (interrupt_requested()) {
+    if (interrupt_requested() && stepper.checkpoint_ready()) {  // else after the next steps
       r.end = RunEnd::interrupted;
       break;
     }

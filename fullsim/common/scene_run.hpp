@@ -72,6 +72,11 @@ struct SceneRunResult {
 
 SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& options);
 
+// Writes a checkpoint whole or not at all: `write` fills a temporary beside `path`, which is
+// then renamed over it, or returns false (nothing to save: no file, returns false). Throws
+// std::runtime_error naming `path`.
+bool write_whole_checkpoint(const std::filesystem::path& path, const std::function<bool(Hdf5File&)>& write);
+
 // The checkpoint file of a scene run in `folder`.
 std::filesystem::path scene_checkpoint_path(const std::filesystem::path& folder);
 

@@ -66,6 +66,9 @@ class Stepper {
   // (walls and meshes added, no state yet). Throws std::runtime_error naming what does not fit.
   virtual void write_checkpoint(Hdf5File& file) const = 0;
   virtual void restore(const Hdf5File& file) = 0;
+  // Whether write_checkpoint() can be called now (a DEM engine right after particles were
+  // inserted or removed needs a step first, which rebuilds its neighbour list).
+  virtual bool checkpoint_ready() const { return true; }
 
   // The engine's field snapshots (HDF5 with an XDMF sidecar that ParaView opens) in `folder`;
   // `continuing`: a restarted run, whose first part's snapshots are kept.

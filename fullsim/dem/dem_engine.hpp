@@ -98,6 +98,7 @@ class DemEngine final : public Stepper {
   // Writes checkpoint() to `path` (whole or nothing), or into an open file.
   void write_checkpoint(const std::filesystem::path& path) const;
   void write_checkpoint(Hdf5File& file) const override;
+  bool checkpoint_ready() const override { return prepared_ && !rebuild_due_; }
   // The state of the checkpoint in `file`, in place of this engine's particles, analytic walls,
   // sink, neighbour list, step and time (the mesh walls added so far stay); prepare() then
   // checks the settings against it, as for the constructor from a checkpoint.

@@ -20,11 +20,6 @@ std::filesystem::path sidecar_of(const std::filesystem::path& hdf5_file) {
 ParticleSnapshots::ParticleSnapshots(std::filesystem::path hdf5_file, long every_steps)
     : hdf5_(std::move(hdf5_file)), every_(every_steps), series_(sidecar_of(hdf5_), hdf5_) {
   if (every_ <= 0) throw std::invalid_argument("snapshot interval must be positive");
-  Hdf5File f(hdf5_, Hdf5File::Mode::create);
-  f.create_group("/snapshots");
-  f.set_attribute("/", "format", std::string("feedflow DEM particle snapshots"));
-  f.set_attribute("/", "format_version", std::int64_t{1});
-  f.close();
 }
 
 std::string ParticleSnapshots::group_name(long step) {
@@ -37,7 +32,13 @@ std::string ParticleSnapshots::write(const ParticleStore& p, double time, long s
   const std::string g = group_name(step);
   const std::size_t n = p.size();
   {
-    Hdf5File f(hdf5_, Hdf5File::Mode::append);
+    // The file is made with the first snapshot: a run that ends before it leaves neither file.
+    Hdf5File f(hdf5_, count() == 0 ? Hdf5File::Mode::create : Hdf5File::Mode::append);
+    if (count() == 0) {
+      f.create_group("/snapshots");
+      f.set_attribute("/", "format", std::string("feedflow DEM particle snapshots"));
+      f.set_attribute("/", "format_version", std::int64_t{1});
+    }
     f.create_group(g);
     f.set_attribute(g, "time", time);
     f.set_attribute(g, "time_unit", std::string("s"));

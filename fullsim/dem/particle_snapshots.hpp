@@ -19,7 +19,8 @@ namespace feedflow {
 
 class ParticleSnapshots {
  public:
-  // Creates (truncates) `hdf5_file`; `every_steps` > 0 is the interval of write_if_due().
+  // The first snapshot creates (truncates) `hdf5_file` and its sidecar; `every_steps` > 0 is
+  // the interval of write_if_due().
   ParticleSnapshots(std::filesystem::path hdf5_file, long every_steps);
 
   // Writes a snapshot now; returns its group.

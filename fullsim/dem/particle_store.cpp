@@ -25,7 +25,7 @@ void compact_field(std::vector<T>& field, const std::vector<char>& flagged) {
 
 std::uint32_t ParticleStore::add(const Vec3& x, double r, double density, double tag,
                                  const Vec3& v) {
-  const double m = density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double m = sphere_mass(density, r);
   position.push_back(x);
   velocity.push_back(v);
   angular_velocity.push_back(Vec3::Zero());

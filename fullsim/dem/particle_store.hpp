@@ -5,6 +5,7 @@
 // walls x history doubles per particle) moves with its particle.
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "models/contact/contact_kinematics.hpp"
@@ -27,6 +28,10 @@ class ParticleStore {
 
   std::size_t size() const { return position.size(); }
 
+  // The mass of a solid sphere as add() books it [kg].
+  static double sphere_mass(double density, double radius) {
+    return density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  }
   // Adds a solid sphere; returns its id.
   std::uint32_t add(const Vec3& x, double radius, double density, double layer = 0.0,
                     const Vec3& v = Vec3::Zero());

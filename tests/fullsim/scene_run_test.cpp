@@ -212,6 +212,63 @@ TEST(SceneRun, RestartedDemRunContinuesTheSameSeries) {
   for (const auto& d : {whole, first, second}) fs::remove_all(d);
 }
 
+// The snapshot files in `dir` that ParaView could not open: an HDF5 file (other than the
+// checkpoint) without its XDMF sidecar.
+std::vector<std::string> snapshots_without_sidecar(const fs::path& dir) {
+  std::vector<std::string> bare;
+  for (const auto& f : fs::directory_iterator(dir)) {
+    const fs::path p = f.path();
+    if (p.extension() == ".h5" && p.filename() != "checkpoint.h5" && !fs::exists(fs::path(p).replace_extension(".xdmf")))
+      bare.push_back(p.filename().string());
+  }
+  return bare;
+}
+
+// A restarted run stopped (Ctrl-C) before its first snapshot leaves no snapshot file at all
+// (DEM and CEL): each file is made with its first snapshot, beside its sidecar.
+TEST(SceneRun, RunStoppedBeforeItsFirstSnapshotLeavesNoBareFile) {
+  const fs::path first = scratch("bare_first"), second = scratch("bare_second");
+  DemEngine a = settling_block();
+  SceneRunOptions o = block_options(a, first, 0.01);
+  o.snapshot_interval = 0.005;
+  run_scene(a, o);
+  DemEngine b = settling_block();
+  SceneRunOptions again = block_options(b, second, 0.03);
+  again.snapshot_interval = 0.005;
+  again.restart = scene_checkpoint_path(first);
+  again.previous = restore_scene_run(b, Hdf5File(again.restart, Hdf5File::Mode::read), again.columns);
+  request_interrupt();
+  EXPECT_EQ(run_scene(b, again).end, RunEnd::interrupted);
+  clear_interrupt_request();
+  EXPECT_TRUE(fs::exists(scene_checkpoint_path(second)));
+  EXPECT_EQ(snapshots_without_sidecar(second), std::vector<std::string>{});
+  EXPECT_EQ(std::distance(fs::directory_iterator(second), fs::directory_iterator()), 1);  // the checkpoint
+
+  const fs::path cel_second = scratch("bare_cel");
+  const HypoplasticModel model = make_hypoplastic_model(loblolly_pine_table1());
+  cel::CelSceneRun c(small_hopper_scene(), model);
+  SceneRunOptions cel_run;
+  cel_run.out = first;
+  cel_run.origin = cel_run.sample_origin = 0.0;
+  cel_run.duration = 0.01;
+  cel_run.columns = {{"time", "s"}};
+  cel_run.sample = [&c] { return std::vector<double>{c.time()}; };
+  cel_run.snapshot_interval = 0.005;
+  run_scene(c, cel_run);
+  cel::CelSceneRun d(small_hopper_scene(), model);
+  cel_run.sample = [&d] { return std::vector<double>{d.time()}; };
+  cel_run.out = cel_second;
+  cel_run.duration = 0.03;
+  cel_run.restart = scene_checkpoint_path(first);
+  cel_run.previous = restore_scene_run(d, Hdf5File(cel_run.restart, Hdf5File::Mode::read), cel_run.columns);
+  request_interrupt();
+  EXPECT_EQ(run_scene(d, cel_run).end, RunEnd::interrupted);
+  clear_interrupt_request();
+  EXPECT_EQ(snapshots_without_sidecar(cel_second), std::vector<std::string>{});
+  EXPECT_FALSE(fs::exists(cel_second / "fields.h5"));
+  for (const auto& dir : {first, second, cel_second}) fs::remove_all(dir);
+}
+
 // The same for a CEL scene run stopped in its gravity phase: the restarted run finds the event
 // where the uninterrupted one did and samples the same rows.
 TEST(SceneRun, RestartedCelRunContinuesTheSameSeries) {

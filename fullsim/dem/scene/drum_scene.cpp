@@ -95,10 +95,17 @@ void DrumScene::rebuild(DemCheckpoint checkpoint) {
   engine_->prepare(quiet);
 }
 
+bool DrumScene::save_fill(Hdf5File& file) const { return rain_fill_ && rain_fill_->save(*engine_, file); }
+
+void DrumScene::restore_fill(const Hdf5File& file) {
+  rain_fill_.emplace(rain());
+  rain_fill_->restore(*engine_, file);
+}
+
 const FillReport& DrumScene::fill(std::ostream& log, ProgressSink* progress) {
-  RainFillSettings settings = rain();
-  settings.progress = progress;
-  fill_report_ = rain_fill(*engine_, settings, log);
+  if (!rain_fill_) rain_fill_.emplace(rain());
+  rain_fill_->set_progress(progress);
+  fill_report_ = rain_fill_->run(*engine_, log);
   if (fill_report_.interrupted) return fill_report_;
   engine_->run_steps(1);  // the list rebuilt after the trim: the bed can be checkpointed
   if (fill_report_.trimmed_count == 0)

@@ -56,9 +56,13 @@ class DrumScene {
   // The rain-fall settings of this drum (region inside the drum, following the fill; trim at
   // the fill line).
   RainFillSettings rain() const;
-  // Rain-fall, settling, trimming to the fill line (logs each phase). Returns the fill's
-  // report; `interrupted` when Ctrl-C stopped it (nothing to continue from).
+  // Rain-fall, settling, trimming to the fill line (logs each phase), or the rest of a fill
+  // restored by restore_fill(). Returns the fill's report; `interrupted` when Ctrl-C stopped it.
   const FillReport& fill(std::ostream& log, ProgressSink* progress = nullptr);
+  // A fill stopped by Ctrl-C: its checkpoint into `file` (false: nothing to continue from, the
+  // first batch was not in); restore_fill() reads it into a scene built from the same spec.
+  bool save_fill(Hdf5File& file) const;
+  void restore_fill(const Hdf5File& file);
   // The shell turns from now on; the sampling clock starts.
   void start_rotation(std::ostream& log);
 
@@ -84,6 +88,7 @@ class DrumScene {
   DrumSceneSpec spec_;
   std::unique_ptr<DemEngine> engine_;
   double rotation_start_ = 0.0;
+  std::optional<RainFill> rain_fill_;  // the fill under way or done
   FillReport fill_report_;
 };
 

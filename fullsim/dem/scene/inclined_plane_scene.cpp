@@ -114,10 +114,17 @@ RainFillSettings InclinedPlaneScene::rain() const {
   return s;
 }
 
+bool InclinedPlaneScene::save_fill(Hdf5File& file) const { return rain_fill_ && rain_fill_->save(*engine_, file); }
+
+void InclinedPlaneScene::restore_fill(const Hdf5File& file) {
+  rain_fill_.emplace(rain());
+  rain_fill_->restore(*engine_, file);
+}
+
 const FillReport& InclinedPlaneScene::fill(std::ostream& log, ProgressSink* progress) {
-  RainFillSettings settings = rain();
-  settings.progress = progress;
-  fill_report_ = rain_fill(*engine_, settings, log);
+  if (!rain_fill_) rain_fill_.emplace(rain());
+  rain_fill_->set_progress(progress);
+  fill_report_ = rain_fill_->run(*engine_, log);
   return fill_report_;
 }
 

@@ -21,6 +21,7 @@
 // until the largest speed is below `settle_speed` (seed: 1 mm/s); centres above the fill height
 // removed.
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include "fullsim/dem/dem_engine.hpp"
@@ -52,9 +53,13 @@ class InclinedPlaneScene {
   // The rain-fall settings of this bin (region over the bin, following the fill; trim at the
   // fill height).
   RainFillSettings rain() const;
-  // Rain-fall, settling, trimming (logs each phase). Returns the fill's report; `interrupted`
-  // when Ctrl-C stopped it (nothing to continue from).
+  // Rain-fall, settling, trimming (logs each phase), or the rest of a fill restored by
+  // restore_fill(). Returns the fill's report; `interrupted` when Ctrl-C stopped it.
   const FillReport& fill(std::ostream& log, ProgressSink* progress = nullptr);
+  // A fill stopped by Ctrl-C: its checkpoint into `file` (false: nothing to continue from, the
+  // first batch was not in); restore_fill() reads it into a scene built from the same spec.
+  bool save_fill(Hdf5File& file) const;
+  void restore_fill(const Hdf5File& file);
   const FillReport& fill_report() const { return fill_report_; }
   void open_gate(std::ostream& log);  // the sampling clock starts
   // True once the kinetic energy per particle is below 1e-3 m g d (a particle of the bed moving
@@ -77,6 +82,7 @@ class InclinedPlaneScene {
   InclinedPlaneSpec spec_;
   std::unique_ptr<DemEngine> engine_;
   double release_time_ = 0.0;
+  std::optional<RainFill> rain_fill_;  // the fill under way or done
   FillReport fill_report_;
 };
 

@@ -25,8 +25,11 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <random>
 #include <string>
+#include <vector>
 
+#include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/common/progress_sink.hpp"
 #include "fullsim/dem/dem_engine.hpp"
 
@@ -77,17 +80,66 @@ struct FillReport {
   bool settled = false;              // largest speed below settle_speed (else the cap ended it)
   double final_max_speed = 0.0;      // [m/s]
   std::size_t failed_placements = 0; // tries that found no free spot (retried later)
-  bool interrupted = false;          // Ctrl-C while filling: nothing to continue from
+  bool interrupted = false;          // Ctrl-C while filling (RainFill::save: what can go on)
   std::string describe() const;      // the plan/log lines of the fill
   // "N spheres rained in, M trimmed, settled (largest speed X mm/s)" for a run's assumptions.
   std::string summary() const;
 };
 
-// Fills `engine` (prepared here if it is not yet; it needs no particles beforehand), settles,
-// trims and tags the layers. Writes one line per phase to `log`. Throws InputError for
-// inconsistent settings (no rate, empty region, a radius that differs from the engine's).
-// Ctrl-C (interrupt_request.hpp) is seen between insertions and steps: the report says
-// `interrupted` and nothing can be continued.
+// One fill of one engine, which Ctrl-C can stop and a later run continue with the same bits.
+// run() fills `engine` (prepared here if it is not yet; it needs no particles beforehand),
+// settles, trims and tags the layers, writing one line per phase to `log`; it throws
+// InputError for inconsistent settings (no rate, empty region). Ctrl-C (interrupt_request.hpp)
+// is seen between insertions and steps: the report says `interrupted`, and once the first
+// batch is in, save() writes the engine's checkpoint with the fill's state beside it, from
+// which another process continues:
+//
+//   RainFill fill(settings);
+//   if (fill.run(engine, log).interrupted) fill.save(engine, file);  // false: nothing to save
+//   ... later, an engine of the same structure:
+//   RainFill again(settings);  again.restore(engine, file);  again.run(engine, log);
+//   // the same particles, bit for bit, as one uninterrupted fill
+class RainFill {
+ public:
+  explicit RainFill(RainFillSettings settings);
+  FillReport run(DemEngine& engine, std::ostream& log);
+  // Where the inserted mass against the target goes (none: silent).
+  void set_progress(ProgressSink* progress) { settings_.progress = progress; }
+  // Stopped by Ctrl-C after its first batch: the engine's checkpoint and the fill's state
+  // (phase, random stream, counts, the advance and the batch under way) into `file`; false
+  // (nothing written) when there is nothing to continue.
+  bool save(const DemEngine& engine, Hdf5File& file) const;
+  // The engine's state and the fill's from a file save() wrote. Throws std::runtime_error
+  // naming the file when it holds no fill under way.
+  void restore(DemEngine& engine, const Hdf5File& file);
+  // Whether `file` holds a fill under way (a checkpoint written by save()).
+  static bool saved_in(const Hdf5File& file);
+  const RainFillSettings& settings() const { return settings_; }
+
+ private:
+  enum class Phase : std::int64_t { start, inserting, settling, done };
+  bool insert_batch(DemEngine& engine);  // false: interrupted
+  bool target_reached(const DemEngine& engine) const;
+  bool advance(DemEngine& engine, double duration);  // false: interrupted
+  void finish(DemEngine& engine, std::ostream& log);  // trim, bands, the sink's share
+
+  RainFillSettings settings_;
+  double sphere_mass_ = 0.0;
+  Phase phase_ = Phase::start;
+  std::mt19937_64 rng_;
+  double t0_ = 0.0;
+  double sunk_before_ = 0.0;
+  std::size_t sunk_count_before_ = 0;
+  FillReport report_;
+  std::optional<double> goal_;           // [s] the advance under way
+  std::optional<double> batch_lower_z_;  // [m] the region's bottom of the batch under way
+  std::vector<Vec3> placed_;             // [m] the batch under way's spheres, not yet inserted
+  double next_note_ = 0.0;               // [kg] the next log line of the insertion
+  double settle_start_ = 0.0;            // [s]
+  long settle_checks_ = 0;
+};
+
+// A whole fill in one go: RainFill(settings).run(engine, log).
 FillReport rain_fill(DemEngine& engine, const RainFillSettings& settings, std::ostream& log);
 
 // The surface the region follows: the highest centre among particles slower than

@@ -1,8 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <functional>
 #include <sstream>
 
 #include "fullsim/dem/scene/rain_fill.hpp"
+#include "models/os/interrupt_request.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
@@ -94,6 +99,91 @@ TEST(RainFill, DeterministicForASeedAndBooksTheTrimmedMass) {
     EXPECT_EQ(p.layer[k], std::floor(p.position[k].z() / 0.002));
   }
   EXPECT_LT(deepest_overlap(p, a.engine.box()), 0.1 * kRadius);  // a settled bed, no blow-up
+}
+
+class CountingProgress final : public ProgressSink {
+ public:
+  explicit CountingProgress(std::function<void(int updates, bool finished)> hook) : hook_(std::move(hook)) {}
+  void begin(const std::string&, double, const std::string&) override {}
+  void update(double) override { hook_(++updates_, false); }
+  void finish() override { hook_(updates_, true); }
+
+ private:
+  std::function<void(int, bool)> hook_;
+  int updates_ = 0;
+};
+
+struct Stop {
+  const char* where;
+  int placement_try = 0;    // Ctrl-C at this try of a placement (0: not)
+  int progress_update = 0;  // at this progress update, between batches (0: not)
+  bool settling = false;    // once the insertion has finished
+};
+
+// A fill stopped by Ctrl-C inside a batch, between batches or while settling, saved with the
+// engine's checkpoint and continued in a new engine, ends with the same particles bit for bit
+// as one uninterrupted fill; stopped inside its first batch there is nothing to save.
+TEST(RainFill, ContinuedFromItsCheckpointGivesTheSameBits) {
+  std::ostringstream log;
+  RainBox straight = make_rain_box(5);
+  const FillReport whole = rain_fill(straight.engine, straight.fill, log);
+  const auto file = std::filesystem::temp_directory_path() / ("feedflow_fill_" + std::to_string(::getpid()) + ".h5");
+  int saved = 0, inside_a_batch = 0;
+  for (const Stop stop : {Stop{"first batch", 5}, Stop{"a later batch", 150}, Stop{"a later batch", 333},
+                          Stop{"between batches", 0, 4}, Stop{"settling", 0, 0, true}}) {
+    RainBox cut = make_rain_box(5);
+    int tries = 0;
+    const auto admits = cut.fill.admits;
+    cut.fill.admits = [&](const Vec3&, double) {
+      if (++tries == stop.placement_try) request_interrupt();
+      return true;
+    };
+    CountingProgress progress([&](int updates, bool finished) {
+      if ((stop.progress_update && updates == stop.progress_update) || (stop.settling && finished))
+        request_interrupt();
+    });
+    cut.fill.progress = &progress;
+    RainFill fill(cut.fill);
+    const FillReport stopped = fill.run(cut.engine, log);
+    clear_interrupt_request();
+    ASSERT_TRUE(stopped.interrupted) << stop.where;
+    bool written = false;
+    {
+      Hdf5File f(file, Hdf5File::Mode::create);
+      written = fill.save(cut.engine, f);
+    }
+    if (std::string(stop.where) == "first batch") {
+      EXPECT_FALSE(written) << "nothing to continue inside the first batch";
+      continue;
+    }
+    ASSERT_TRUE(written) << stop.where;
+    ++saved;
+    if (Hdf5File(file, Hdf5File::Mode::read).dims("/fill/placed").at(0) > 0) ++inside_a_batch;
+    RainBox again = make_rain_box(5);
+    RainFill rest(again.fill);
+    rest.restore(again.engine, Hdf5File(file, Hdf5File::Mode::read));
+    const FillReport r = rest.run(again.engine, log);
+    EXPECT_FALSE(r.interrupted);
+    EXPECT_EQ(r.inserted_count, whole.inserted_count) << stop.where;
+    EXPECT_EQ(r.trimmed_count, whole.trimmed_count) << stop.where;
+    EXPECT_EQ(r.end_time, whole.end_time) << stop.where;
+    EXPECT_EQ(again.engine.particles().position, straight.engine.particles().position) << stop.where;
+    EXPECT_EQ(again.engine.particles().velocity, straight.engine.particles().velocity) << stop.where;
+  }
+  std::filesystem::remove(file);
+  EXPECT_EQ(saved, 4);
+  EXPECT_GE(inside_a_batch, 1);  // the state of a batch half placed was saved and continued
+}
+
+// A file without a fill under way is refused by name.
+TEST(RainFill, RestoreRefusesAFileWithoutAFill) {
+  RainBox b = make_rain_box(5);
+  const auto file = std::filesystem::temp_directory_path() / ("feedflow_nofill_" + std::to_string(::getpid()) + ".h5");
+  { Hdf5File f(file, Hdf5File::Mode::create); }
+  RainFill fill(b.fill);
+  EXPECT_FALSE(RainFill::saved_in(Hdf5File(file, Hdf5File::Mode::read)));
+  EXPECT_THROW(fill.restore(b.engine, Hdf5File(file, Hdf5File::Mode::read)), std::runtime_error);
+  std::filesystem::remove(file);
 }
 
 // A region that follows the fill rides above the resting particles.
