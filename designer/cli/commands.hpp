@@ -15,7 +15,9 @@ void add_report_command(CLI::App& app, int& exit_code);
 void add_element_test_command(CLI::App& app, int& exit_code);
 // simulate: a full simulation (DEM or CEL-FEM) of a case, results JSON and time series.
 void add_simulate_command(CLI::App& app, int& exit_code);
-// sweep, bench: reserved names that say "not yet available".
+// bench: run time against error for every rung and setting of the seed's design questions.
+void add_bench_command(CLI::App& app, int& exit_code);
+// sweep: a reserved name that says "not yet available".
 void add_reserved_commands(CLI::App& app, int& exit_code);
 
 }  // namespace feedflow

@@ -13,7 +13,6 @@ struct Reserved {
 
 constexpr Reserved kReserved[] = {
     {"sweep", "run a what-if sweep over case values"},
-    {"bench", "benchmark run time against error for the solvers"},
 };
 
 }  // namespace

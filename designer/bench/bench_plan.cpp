@@ -1,0 +1,188 @@
+#include "designer/bench/bench_plan.hpp"
+
+#include <cctype>
+
+#include "designer/design/model_choices.hpp"
+#include "models/units/quantity_format.hpp"
+
+namespace feedflow {
+namespace {
+
+constexpr double kMm = 1e-3;
+// CEL cell sizes: the refinement series halves the cell from 20 mm until three levels resolve
+// the feature (kReferenceCellsAcross) or the cell would be below 1 mm.
+constexpr double kCoarsestCell = 20 * kMm;
+constexpr double kFinestCell = 1 * kMm;
+constexpr std::string_view kSeedLaw = "hysteretic_nonlinear2";
+
+// "2.5mm": a value as typed after --set (no space: the invocation is a runnable command).
+std::string millimetres(double metres) {
+  std::string s = std::to_string(metres / kMm);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s + "mm";
+}
+
+// Every alternative of a model key at the reduced rung (the design check).
+void add_model_alternatives(BenchQuestion& q, std::string_view key, const std::string& quantity,
+                            const std::string& rung) {
+  for (const ModelListing& listing : model_options()) {
+    if (listing.key != key) continue;
+    for (const ModelEntry& e : listing.entries) {
+      BenchPoint p;
+      p.setting = std::string(key) + "=" + std::string(e.name);
+      p.rung = rung;
+      p.quantity = quantity;
+      p.models = {p.setting};
+      p.quick = true;
+      q.points.push_back(std::move(p));
+    }
+  }
+}
+
+void add_design_point(BenchQuestion& q, const std::string& quantity, const std::string& rung) {
+  BenchPoint p;
+  p.setting = "design check";
+  p.rung = rung;
+  p.quantity = quantity;
+  p.quick = true;
+  q.points.push_back(std::move(p));
+}
+
+// What the CEL points must resolve: `length` [m] of `what` ("the half outlet").
+struct Feature {
+  double length;
+  std::string what;
+};
+
+// The CEL refinement series (its levels fine enough for the feature make the reference; its
+// coarsest `quick_levels` run in the quick bench) and the remap and flux settings at 10 mm.
+void add_cel_points(BenchQuestion& q, const std::string& quantity, std::optional<double> time, const Feature& feature,
+                    int quick_levels = 2) {
+  int level = 0, resolving = 0;
+  for (double h = kCoarsestCell; h >= kFinestCell && (resolving < 3 || h >= 2.5 * kMm); h *= 0.5) {
+    BenchPoint p;
+    p.setting = "CEL cells " + millimetres(h);
+    p.rung = "L2";
+    p.quantity = quantity;
+    p.solver = Solver::cel;
+    p.sets = {"cel.cell_size=" + millimetres(h)};
+    p.time = time;
+    p.cell_size = h;
+    const double across = feature.length / h;
+    p.resolution = format_number(across, 2) + " cells across " + feature.what;
+    p.role = across >= kReferenceCellsAcross ? ReferenceRole::cel_refinement : ReferenceRole::none;
+    resolving += p.role == ReferenceRole::cel_refinement;
+    p.quick = level++ < quick_levels;
+    q.points.push_back(std::move(p));
+  }
+  for (const char* remap : {"second"})
+    for (const char* flux : {"donor_cell", "limited", "plic"}) {
+      BenchPoint p;
+      p.setting = std::string("CEL cells 10mm, ") + remap + "-order remap, " + flux + " flux";
+      p.rung = "L2";
+      p.quantity = quantity;
+      p.solver = Solver::cel;
+      p.sets = {"cel.cell_size=10mm", std::string("cel.remap_order=") + remap,
+                std::string("cel.material_flux=") + flux};
+      p.time = time;
+      p.resolution = format_number(feature.length / (10 * kMm), 2) + " cells across " + feature.what;
+      q.points.push_back(std::move(p));
+    }
+}
+
+// DEM with each normal law; the seed's law at the seed's resolution is the reference.
+void add_dem_points(BenchQuestion& q, const std::string& quantity) {
+  for (std::string_view law : {std::string_view("hertz"), kSeedLaw}) {
+    BenchPoint p;
+    p.setting = "DEM " + std::string(law);
+    p.rung = "L3";
+    p.quantity = quantity;
+    p.solver = Solver::dem;
+    p.sets = {"dem.normal_law=" + std::string(law)};
+    p.role = law == kSeedLaw ? ReferenceRole::dem_reference : ReferenceRole::none;
+    q.points.push_back(std::move(p));
+  }
+}
+
+BenchQuestion hopper_question(std::string id, std::string title, double outlet, bool categorical) {
+  BenchQuestion q{std::move(id), std::move(title), "cases/pilot_hopper.toml",
+                  {"hopper.outlet_width=" + millimetres(outlet)}, categorical, {}};
+  return q;
+}
+
+}  // namespace
+
+std::string point_id(const BenchPoint& point) {
+  std::string id = point.rung + "_" + point.setting;
+  for (char& c : id)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
+  return id;
+}
+
+std::vector<BenchQuestion> seed_bench_questions() {
+  std::vector<BenchQuestion> questions;
+  constexpr double kHopperTime = 1.0;  // [s] after the opening: the rate's batch means settle
+
+  // The pilot hopper's questions: each with the model key whose alternatives answer it.
+  struct HopperQuestion {
+    const char* id;
+    const char* title;
+    double outlet;
+    bool categorical;
+    const char* model_key;
+    const char* quantity;
+  };
+  for (const HopperQuestion& h : {
+           HopperQuestion{"hopper_discharge_rate_60mm", "Pilot hopper: mass discharge rate at W = 60 mm", 60 * kMm,
+                          false, "hopper.discharge", "mass_flow_rate"},
+           HopperQuestion{"hopper_arching_20mm", "Pilot hopper: does it arch at W = 20 mm?", 20 * kMm, true,
+                          "hopper.critical_outlet", "arching"},
+           HopperQuestion{"hopper_flow_pattern_60mm", "Pilot hopper: mass or funnel flow at 30 deg", 60 * kMm, true,
+                          "hopper.flow_factor", "flow_pattern"}}) {
+    BenchQuestion q = hopper_question(h.id, h.title, h.outlet, h.categorical);
+    add_model_alternatives(q, h.model_key, h.quantity, "L0");
+    add_cel_points(q, h.quantity, kHopperTime, {0.5 * h.outlet, "the half outlet"});
+    if (std::string(h.quantity) == "arching")  // B_c against the outlet: above it, the outlet arches
+      for (auto& p : q.points)
+        if (p.rung == "L0") {
+          p.quantity = "critical_outlet_width";
+          p.label_rule = BenchPoint::LabelRule{h.outlet, "arched", "flowing"};
+        }
+    add_dem_points(q, h.quantity);
+    questions.push_back(std::move(q));
+  }
+
+  for (const char* angle : {"29_5", "37"}) {
+    BenchQuestion q{std::string("chute_stopping_thickness_") + angle,
+                    std::string("Inclined plane at ") + (angle == std::string("37") ? "37" : "29.5") +
+                        " deg: deposit thickness mid-ramp",
+                    std::string("cases/inclined_plane_") + angle + ".toml", {}, false, {}};
+    add_model_alternatives(q, "chute.stopping_thickness", "stopping_thickness", "L0");
+    add_model_alternatives(q, "chute.deposit", "deposit_thickness_mid_ramp", "L1");
+    // The flow comes to rest after ~9 s at 29.5 deg and ~30 s at 37 deg (L1): a CEL run at
+    // 20 mm takes minutes at 29.5 deg, so the quick bench has that one level only.
+    // The deposit the cells must resolve: about 45 mm at 29.5 deg, 3.5 mm at 37 deg (L0).
+    const Feature deposit{angle == std::string("37") ? 3.5 * kMm : 45 * kMm, "the deposit"};
+    add_cel_points(q, "deposit_thickness_mid_ramp", std::nullopt, deposit, angle == std::string("29_5") ? 1 : 0);
+    add_dem_points(q, "deposit_thickness_mid_ramp");
+    questions.push_back(std::move(q));
+  }
+
+  for (const char* rpm : {"10", "20", "50"}) {
+    for (bool regime : {false, true}) {
+      BenchQuestion q{std::string("drum_") + (regime ? "regime_" : "angle_") + rpm + "rpm",
+                      std::string("Rotating drum at ") + rpm + " rpm: " +
+                          (regime ? "bed regime" : "dynamic angle of repose"),
+                      "cases/rotating_drum_20rpm.toml", {std::string("drum.speed=") + rpm + "rpm"}, regime, {}};
+      const std::string quantity = regime ? "regime" : "dynamic_angle_of_repose";
+      add_design_point(q, quantity, "L0");
+      add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});
+      add_dem_points(q, quantity);
+      questions.push_back(std::move(q));
+    }
+  }
+  return questions;
+}
+
+}  // namespace feedflow

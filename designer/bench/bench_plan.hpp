@@ -1,0 +1,65 @@
+#pragma once
+// What `feedflow bench` measures: the design questions of the seed's scenes (a case, the
+// setting that poses the question, the result it reads) and, for each, the points to run: every
+// rung and setting a user or the designer could choose (each reduced-model alternative, CEL at
+// each cell size, DEM with each normal law), and the runs that make its reference (a CEL
+// refinement series, the DEM run at the seed's resolution). `quick` points are the coarse ones
+// (`feedflow bench --quick`, minutes); the rest take hours.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "designer/simulate/simulation_request.hpp"
+
+namespace feedflow {
+
+// The role of a point in the question's reference.
+enum class ReferenceRole {
+  none,            // measured against the reference
+  cel_refinement,  // one level of the CEL refinement series (Richardson)
+  dem_reference,   // the DEM run at the seed's resolution with the seed's law
+};
+
+struct BenchPoint {
+  std::string setting;               // what a user would choose: "CEL 10 mm cells"
+  std::string rung;                  // "L0", "L1", "L2", "L3"
+  std::string quantity;              // the results key this point answers with
+  std::optional<Solver> solver;      // none: the design check (reduced models)
+  std::vector<std::string> sets;     // --set KEY=VALUE beyond the question's own
+  std::vector<std::string> models;   // --model KEY=NAME
+  std::optional<double> time;        // [s] simulated time (--time); none: the scene's own end
+  std::optional<double> cell_size;   // [m] of a CEL point (the refinement series' h)
+  ReferenceRole role = ReferenceRole::none;
+  bool quick = false;
+  // A number read as the question's label (the arching question reads B_c against the outlet):
+  // above `threshold` it is `above`, else `below`.
+  struct LabelRule {
+    double threshold = 0.0;
+    std::string above, below;
+  };
+  std::optional<LabelRule> label_rule;
+  std::string resolution;            // what a CEL point resolves: "3 cells across the half outlet"
+};
+
+struct BenchQuestion {
+  std::string id;                    // "hopper_discharge_rate_60mm" (file-name friendly)
+  std::string title;                 // "Pilot hopper: mass discharge rate at W = 60 mm"
+  std::string case_file;             // relative to the repository root: "cases/pilot_hopper.toml"
+  std::vector<std::string> sets;     // the question's setting: "hopper.outlet_width=60mm"
+  bool categorical = false;          // a label (arching, regime), judged right or wrong
+  std::vector<BenchPoint> points;
+};
+
+// A CEL level enters the reference only when it puts at least this many cells across the
+// feature the question turns on (half the outlet, the drum's radius, the deposit): coarser
+// runs are bench points, shown with their error, but cannot resolve the answer (a 60 mm
+// outlet on 20 mm cells reads "arched" for a hopper that flows).
+constexpr double kReferenceCellsAcross = 3.0;
+
+// A point's identity in the question: "<rung> <setting>", made file-name friendly.
+std::string point_id(const BenchPoint& point);
+
+// The questions of the seed's scenes with all their points (pilot hopper, inclined plane, drum).
+std::vector<BenchQuestion> seed_bench_questions();
+
+}  // namespace feedflow

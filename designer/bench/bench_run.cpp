@@ -1,0 +1,112 @@
+#include "designer/bench/bench_run.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/design/design_check.hpp"
+#include "designer/simulate/simulation.hpp"
+#include "models/core/errors.hpp"
+#include "models/os/atomic_file.hpp"
+#include "reports/results_json.hpp"
+
+namespace feedflow {
+namespace {
+
+std::string file_name_friendly(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
+  return s;
+}
+
+std::string seconds_text(double s) {
+  std::ostringstream o;
+  o << s << "s";
+  return o.str();
+}
+
+}  // namespace
+
+std::string bench_invocation(const BenchQuestion& q, const BenchPoint& p) {
+  std::string s = (p.solver ? "simulate " : "design ") + q.case_file;
+  if (p.solver) s += std::string(" --solver ") + to_string(*p.solver);
+  for (const auto& set : q.sets) s += " --set " + set;
+  for (const auto& set : p.sets) s += " --set " + set;
+  for (const auto& model : p.models) s += " --model " + model;
+  if (p.time) s += " --time " + seconds_text(*p.time);
+  return s;
+}
+
+std::filesystem::path bench_run_folder(const std::filesystem::path& root, const BenchQuestion& q,
+                                       const BenchPoint& p) {
+  std::string name = std::filesystem::path(q.case_file).stem().string();
+  for (const auto& set : q.sets) name += "__" + set;
+  name += "__" + point_id(p);
+  if (p.time) name += "__" + seconds_text(*p.time);
+  return root / file_name_friendly(name);
+}
+
+BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
+                         const std::filesystem::path& folder) {
+  BenchRun run;
+  run.invocation = bench_invocation(q, p);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    std::vector<SetOverride> overrides;
+    for (const auto& set : q.sets) overrides.push_back(parse_set_override(set));
+    for (const auto& set : p.sets) overrides.push_back(parse_set_override(set));
+    const Case c = load_case((source_root / q.case_file).string(), overrides);
+    DesignRecord record;
+    if (p.solver) {
+      std::filesystem::create_directories(folder);
+      std::ofstream log(folder / "run.log");
+      log << std::unitbuf;  // the run's phases as they come (a long run can be followed)
+      SimulationRequest request{c, *p.solver, p.time, folder, {}, false, &log};
+      const SimulationOutcome outcome = simulate(request);
+      if (outcome.end == SimulationEnd::interrupted) run.status = "interrupted";
+      record = outcome.record;
+      run.cores = omp_get_max_threads();
+    } else {
+      record = design_check(c, ModelChoices::parse(p.models));
+    }
+    run.results = to_json(record).at("results");
+  } catch (const std::exception& e) {  // a bench row says why a point failed; the bench goes on
+    run.status = std::string("failed: ") + e.what();
+  }
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation) {
+  std::ifstream in(folder / "run.json");
+  if (!in) return std::nullopt;
+  try {
+    const auto j = nlohmann::ordered_json::parse(in);
+    if (j.at("invocation").get<std::string>() != invocation) return std::nullopt;
+    BenchRun run;
+    run.invocation = invocation;
+    run.status = j.at("status").get<std::string>();
+    run.wall_seconds = j.at("wall_seconds").get<double>();
+    run.cores = j.at("cores").get<int>();
+    run.results = j.at("results");
+    return run;
+  } catch (const std::exception&) {  // damaged: run it again
+    return std::nullopt;
+  }
+}
+
+void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
+  std::filesystem::create_directories(folder);
+  nlohmann::ordered_json j;
+  j["invocation"] = run.invocation;
+  j["status"] = run.status;
+  j["wall_seconds"] = run.wall_seconds;
+  j["cores"] = run.cores;
+  j["results"] = run.results;
+  write_file_atomically(folder / "run.json", j.dump(2) + "\n");
+}
+
+}  // namespace feedflow

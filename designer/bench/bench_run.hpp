@@ -1,0 +1,43 @@
+#pragma once
+// One run of a bench point, in this process (no process per point): the design check with the
+// point's model choices, or the simulation with its solver and settings, timed; and the run
+// saved in its folder (run.json), so an interrupted or repeated bench skips what is done. The
+// drum's angle and regime questions ask for the same runs, which are made once.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "designer/bench/bench_plan.hpp"
+
+namespace feedflow {
+
+struct BenchRun {
+  std::string invocation;          // the command a user would type for it
+  std::string status = "done";     // "done", "interrupted" (Ctrl-C) or "failed: <why>"
+  double wall_seconds = 0.0;       // [s] of the check or the simulation (loading included)
+  int cores = 1;                   // threads it ran on
+  nlohmann::ordered_json results;  // the record's results, as results.json has them
+  bool done() const { return status == "done"; }
+};
+
+// The command line of the point: "simulate cases/pilot_hopper.toml --solver cel --set ...".
+std::string bench_invocation(const BenchQuestion& question, const BenchPoint& point);
+// The folder of the point's run below `root` (shared by questions asking for the same run).
+std::filesystem::path bench_run_folder(const std::filesystem::path& root, const BenchQuestion& question,
+                                       const BenchPoint& point);
+
+// Runs the point: case files relative to `source_root`; a simulation's files go to `folder`.
+// A run that fails (bad input, a blow-up) or is interrupted comes back with its status, never
+// as a throw.
+BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,
+                         const std::filesystem::path& source_root, const std::filesystem::path& folder);
+
+// The run saved in `folder` for this invocation; none when there is none, or it was made for
+// another invocation or is damaged.
+std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation);
+// Writes folder/run.json whole (a temporary renamed over it).
+void save_bench_run(const std::filesystem::path& folder, const BenchRun& run);
+
+}  // namespace feedflow

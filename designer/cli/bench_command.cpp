@@ -1,0 +1,229 @@
+// feedflow bench: run time against error for every rung and setting of the seed's design
+// questions (designer/bench/), into bench.json, bench.csv and a report with one chart per
+// question. Resumable: runs already in the output folder are read back, not run again.
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <algorithm>
+
+#include "designer/bench/bench_plan.hpp"
+#include "designer/bench/bench_run.hpp"
+#include "designer/bench/bench_table.hpp"
+#include "designer/cli/command_options.hpp"
+#include "designer/cli/commands.hpp"
+#include "designer/cli/exit_codes.hpp"
+#include "designer/cli/invocation.hpp"
+#include "designer/cli/output_files.hpp"
+#include "designer/cli/output_folder.hpp"
+#include "designer/cli/report_files.hpp"
+#include "models/core/errors.hpp"
+#include "models/os/interrupt_request.hpp"
+#include "models/units/quantity_format.hpp"
+#include "reports/results_json.hpp"
+
+namespace feedflow {
+namespace {
+
+struct BenchArguments {
+  bool quick = false;
+  bool list = false;
+  bool report = false;
+  std::vector<std::string> only;   // question ids
+  std::vector<std::string> rungs;  // L0..L3; empty: all
+  CommandOptions options;
+};
+
+std::vector<BenchQuestion> selected_questions(const BenchArguments& args) {
+  std::vector<BenchQuestion> all = seed_bench_questions();
+  if (args.only.empty()) return all;
+  std::vector<BenchQuestion> chosen;
+  for (const auto& id : args.only) {
+    const auto it = std::find_if(all.begin(), all.end(), [&](const BenchQuestion& q) { return q.id == id; });
+    if (it == all.end()) {
+      std::string known;
+      for (const auto& q : all) known += (known.empty() ? "" : ", ") + q.id;
+      throw InputError("--only", id, "no bench question named '" + id + "'; known: " + known);
+    }
+    chosen.push_back(*it);
+  }
+  return chosen;
+}
+
+bool wanted_rung(const BenchArguments& args, const BenchPoint& p) {
+  return args.rungs.empty() || std::find(args.rungs.begin(), args.rungs.end(), p.rung) != args.rungs.end();
+}
+
+// The report's record: each question's reference as a result, its chart, and the notes.
+DesignRecord bench_record(const std::vector<BenchQuestionTable>& tables, bool quick, double wall_seconds) {
+  DesignRecord r;
+  r.case_name = "bench";
+  r.description = std::string("feedflow bench") + (quick ? " --quick" : "") + ": run time against error, " +
+                  std::to_string(tables.size()) + " design questions of the seed's scenes";
+  for (const auto& t : tables) {
+    const BenchReference& ref = t.reference;
+    if (ref.source.empty()) {
+      r.assumptions.push_back(t.question->id + ": no reference (its reference runs were not made)");
+      continue;
+    }
+    Estimate e;
+    if (t.question->categorical) e.value = ref.label;
+    else {
+      e.value = *ref.value;
+      e.unit = ref.unit;
+      if (ref.error_bar) {
+        e.low = *ref.value - *ref.error_bar;
+        e.high = *ref.value + *ref.error_bar;
+      }
+    }
+    e.model = ref.source;
+    e.rung = Rung::L2;
+    r.results.emplace_back(t.question->id, e);
+    if (auto chart = error_against_time_chart(t)) r.charts.push_back(std::move(*chart));
+    if (!ref.agreement.empty()) r.assumptions.push_back(t.question->id + ": " + ref.agreement);
+  }
+  r.assumptions.push_back("errors are relative to the reference; labels are right or wrong; the tables are in "
+                          "bench.csv and bench.json");
+  r.verdict.reasons.push_back("note: a benchmark, not a design check");
+  r.command_line = invocation();
+  r.wall_seconds = wall_seconds;
+  return r;
+}
+
+void list_bench(const std::vector<BenchQuestion>& questions) {
+  for (const auto& q : questions) {
+    std::cout << q.id << ": " << q.title << '\n';
+    for (const auto& p : q.points)
+      std::cout << "  " << (p.quick ? "quick " : "full  ") << p.rung << "  " << bench_invocation(q, p) << '\n';
+  }
+}
+
+struct BenchRuns {
+  std::map<std::filesystem::path, BenchRun> by_folder;
+  std::size_t made = 0, read_back = 0;
+  bool interrupted = false;
+};
+
+// Each selected run once (the drum's angle and regime share theirs), read back when a run.json
+// of the same invocation is in its folder; stops at Ctrl-C.
+BenchRuns make_runs(const BenchArguments& args, const std::vector<BenchQuestion>& questions,
+                    const std::filesystem::path& runs_root) {
+  std::vector<std::pair<const BenchQuestion*, const BenchPoint*>> todo;
+  std::set<std::filesystem::path> seen;
+  for (const auto& q : questions)
+    for (const auto& p : q.points)
+      if ((!args.quick || p.quick) && wanted_rung(args, p) && seen.insert(bench_run_folder(runs_root, q, p)).second)
+        todo.emplace_back(&q, &p);
+  BenchRuns runs;
+  const bool say = args.options.human_output();
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    const auto& [q, p] = todo[k];
+    const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
+    if (auto saved = saved_bench_run(dir, bench_invocation(*q, *p))) {
+      runs.by_folder[dir] = std::move(*saved);
+      ++runs.read_back;
+      continue;
+    }
+    if (say) std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
+    BenchRun run = run_bench_point(*q, *p, ".", dir);
+    if (say) std::cout << " " << format_number(run.wall_seconds, 3) << " s" << (run.done() ? "" : " (" + run.status + ")") << '\n';
+    if (run.status == "interrupted" || interrupt_requested()) {
+      runs.interrupted = true;
+      return runs;
+    }
+    save_bench_run(dir, run);
+    runs.by_folder[dir] = std::move(run);
+    ++runs.made;
+  }
+  return runs;
+}
+
+std::string reference_line(const BenchQuestionTable& t) {
+  const BenchReference& r = t.reference;
+  if (r.source.empty()) return t.question->id + ": reference none";
+  const std::string value =
+      t.question->categorical ? r.label
+      : r.error_bar           ? format_number(*r.value, 4) + " +- " + format_number(*r.error_bar, 3) + " " + r.unit
+                              : format_number(*r.value, 4) + " " + r.unit;
+  return t.question->id + ": reference " + value + " (" + r.source + ")";
+}
+
+int run_bench(const BenchArguments& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<BenchQuestion> questions = selected_questions(args);
+  if (args.list) {
+    list_bench(questions);
+    return kExitOk;
+  }
+  const std::filesystem::path out = args.options.out.empty() ? std::string("out/bench") : args.options.out;
+  OutputFolder folder(out, "--out");
+  install_interrupt_handler();
+  const BenchRuns runs = make_runs(args, questions, out / "runs");
+
+  std::vector<BenchQuestionTable> tables;
+  std::vector<std::map<std::string, BenchRun>> by_question(questions.size());
+  for (std::size_t i = 0; i < questions.size(); ++i) {
+    for (const auto& p : questions[i].points) {
+      const auto it = runs.by_folder.find(bench_run_folder(out / "runs", questions[i], p));
+      if (it != runs.by_folder.end()) by_question[i][point_id(p)] = it->second;
+    }
+    tables.push_back(tabulate(questions[i], by_question[i]));
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::ordered_json json;
+  json["feedflow_bench"] = args.quick ? "quick" : "full";
+  json["command_line"] = invocation();
+  json["runs_made"] = runs.made;
+  json["runs_read_back"] = runs.read_back;
+  json["wall_seconds"] = wall;
+  json["questions"] = bench_json(tables);
+  const std::string json_text = json.dump(2) + "\n";
+  std::vector<OutputFile> files = {{out / "bench.json", json_text, "--out"}, {out / "bench.csv", bench_csv(tables), "--out"}};
+  if (args.report)
+    for (auto& f : report_files(out, bench_record(tables, args.quick, wall))) files.push_back(std::move(f));
+  if (!args.options.json.empty() && !args.options.json_to_stdout())
+    files.push_back({args.options.json, json_text, "--json"});
+  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr,
+                                     args.options.verbose, &folder);
+  if (args.options.human_output()) {
+    for (const auto& t : tables) {
+      std::cout << reference_line(t) << '\n';
+      if (!t.reference.agreement.empty()) std::cout << "  " << t.reference.agreement << '\n';
+    }
+    std::cout << runs.made << " run(s) made, " << runs.read_back << " read back, " << format_number(wall, 3) << " s\nWritten: ";
+    for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
+    std::cout << '\n';
+  }
+  if (runs.interrupted) {
+    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are kept)\n";
+    return kExitInterrupted;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<BenchArguments>();
+  auto* command = app.add_subcommand(
+      "bench", "run time against error for every rung and setting of the seed's design questions");
+  command->add_flag("--quick", args->quick, "coarse points only (minutes); the full bench takes hours");
+  command->add_flag("--list", args->list, "list the questions and the runs of each, then stop");
+  command->add_flag("--report", args->report, "also write report.pdf and report.html (one chart per question)");
+  command->add_option("--only", args->only, "question ids to run (default: all; see --list)")
+      ->delimiter(',')
+      ->type_name("ID[,ID...]");
+  command->add_option("--rungs", args->rungs, "rungs to run (default: all), e.g. L0,L1 for the reduced models")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"L0", "L1", "L2", "L3"}))
+      ->type_name("RUNG[,RUNG...]");
+  command->add_option("--out", args->options.out,
+                      "output folder (default out/bench); runs already in it are read back, not run again")
+      ->type_name("DIR");
+  add_json_option(*command, args->options, "the bench JSON");
+  add_verbosity_options(*command, args->options, true);
+  command->callback([args, &exit_code] { exit_code = run_bench(*args); });
+}
+
+}  // namespace feedflow

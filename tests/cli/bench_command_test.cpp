@@ -1,0 +1,60 @@
+// `feedflow bench` as a user runs it: the reduced-model points of one question, the outputs,
+// and a second run that reads the runs back instead of making them again.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using namespace feedflow::testing;
+
+namespace {
+
+// The four discharge models of the pilot hopper at 60 mm: bench.json and bench.csv hold one
+// answer each with its value and wall time (no reference without the CEL runs); run again, all
+// four are read back (resumable) and the answers are the same.
+TEST(BenchCommand, ReducedModelPointsAreMadeOnceAndReadBack) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const std::string args = "bench --quick --rungs L0 --only hopper_discharge_rate_60mm --out b";
+  const feedflow::testing::Run first = run_feedflow(args, dir);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.out.find("4 run(s) made, 0 read back"), std::string::npos) << first.out;
+  const auto json = nlohmann::json::parse(slurp(dir / "b" / "bench.json"));
+  ASSERT_EQ(json["questions"].size(), 1u);
+  const auto& answers = json["questions"][0]["answers"];
+  int answered = 0;
+  for (const auto& a : answers)
+    if (a["status"] == "done") {
+      ++answered;
+      EXPECT_GT(a["value"].get<double>(), 1.0);  // kg/s of the pilot hopper: 2-6
+      EXPECT_LT(a["value"].get<double>(), 10.0);
+      EXPECT_EQ(a["unit"], "kg/s");
+      EXPECT_GE(a["wall_seconds"].get<double>(), 0.0);
+    } else {
+      EXPECT_EQ(a["status"], "not run");  // the CEL and DEM points
+    }
+  EXPECT_EQ(answered, 4);
+  EXPECT_EQ(json["questions"][0]["reference"]["source"], "");
+  const feedflow::testing::Run again = run_feedflow(args, dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("0 run(s) made, 4 read back"), std::string::npos) << again.out;
+  EXPECT_EQ(nlohmann::json::parse(slurp(dir / "b" / "bench.json"))["questions"], json["questions"]);
+  const std::string csv = slurp(dir / "b" / "bench.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(answers.size()));  // header + answers
+  fs::remove_all(dir);
+}
+
+// An unknown question or rung is bad input (exit 2) naming the option, and nothing is written.
+TEST(BenchCommand, UnknownQuestionIsRefusedByName) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const feedflow::testing::Run r = run_feedflow("bench --only no_such_question --out b", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--only"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("hopper_discharge_rate_60mm"), std::string::npos) << r.err;  // lists the known ones
+  EXPECT_FALSE(fs::exists(dir / "b"));
+  EXPECT_EQ(run_feedflow("bench --rungs L7", dir).exit_code, 2);
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,166 @@
+// The bench harness (designer/bench): its plan, its references, errors and Pareto front on
+// synthetic runs, and its saved runs.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "designer/bench/bench_plan.hpp"
+#include "designer/bench/bench_run.hpp"
+#include "designer/bench/bench_table.hpp"
+#include "designer/case/case_loader.hpp"
+
+namespace feedflow {
+namespace {
+
+// A run that answered `quantity` with a number and band, in `seconds`.
+BenchRun number_run(const std::string& quantity, double value, double low, double high, double seconds) {
+  BenchRun r;
+  r.invocation = "synthetic";
+  r.wall_seconds = seconds;
+  r.results[quantity] = {{"value", value}, {"unit", "kg/s"}, {"low", low}, {"high", high}};
+  return r;
+}
+
+BenchRun label_run(const std::string& quantity, const std::string& label, double seconds) {
+  BenchRun r;
+  r.invocation = "synthetic";
+  r.wall_seconds = seconds;
+  r.results[quantity] = {{"value", label}, {"unit", ""}};
+  return r;
+}
+
+BenchPoint point(const std::string& setting, const std::string& rung, ReferenceRole role = ReferenceRole::none,
+                 std::optional<double> cell = std::nullopt) {
+  BenchPoint p;
+  p.setting = setting;
+  p.rung = rung;
+  p.quantity = "mass_flow_rate";
+  p.role = role;
+  p.cell_size = cell;
+  return p;
+}
+
+// Every point of the plan is a case the loader accepts (its case file, the question's and the
+// point's settings), its id is unique within its question, and every question has reference
+// runs: the DEM run with the seed's law, and CEL levels that resolve its feature (3 cells
+// across): three for a number (Richardson), one for a label, none for the 37 deg deposit
+// (3.5 mm: no level of 1 mm or more resolves it).
+TEST(BenchPlan, EveryPointIsAValidCaseWithReferenceRuns) {
+  const auto questions = seed_bench_questions();
+  EXPECT_GE(questions.size(), 11u);  // hopper x3, chute x2, drum x6
+  for (const auto& q : questions) {
+    std::set<std::string> ids;
+    int levels = 0, dem = 0, quick = 0;
+    for (const auto& p : q.points) {
+      EXPECT_TRUE(ids.insert(point_id(p)).second) << q.id << ": " << p.setting;
+      std::vector<SetOverride> overrides;
+      for (const auto& s : q.sets) overrides.push_back(parse_set_override(s));
+      for (const auto& s : p.sets) overrides.push_back(parse_set_override(s));
+      EXPECT_NO_THROW(load_case(std::string(FEEDFLOW_SOURCE_DIR) + "/" + q.case_file, overrides))
+          << bench_invocation(q, p);
+      levels += p.role == ReferenceRole::cel_refinement;
+      dem += p.role == ReferenceRole::dem_reference;
+      quick += p.quick;
+    }
+    if (q.id == "chute_stopping_thickness_37") EXPECT_EQ(levels, 0);
+    else EXPECT_GE(levels, q.categorical ? 1 : 3) << q.id;
+    EXPECT_EQ(dem, 1) << q.id;
+    EXPECT_GE(quick, 2) << q.id;  // a reduced-model point and a coarse CEL point at least
+  }
+}
+
+// The reference of a number is the Richardson limit of the CEL series (values on a first-order
+// power law: the limit itself); each answer's error is relative to it, a band that holds it
+// says so, the Pareto front is what no point beats on both time and error, and a DEM reference
+// far outside both error bars is reported as a disagreement.
+TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
+  BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}};
+  q.points = {point("beverloo", "L0"), point("johanson", "L0"),
+              point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
+              point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005),
+              point("DEM seed law", "L3", ReferenceRole::dem_reference)};
+  std::map<std::string, BenchRun> runs;
+  auto cel = [](double h) { return 5.0 + 40.0 * h; };  // limit 5 kg/s
+  runs[point_id(q.points[0])] = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.003);   // band holds 5
+  runs[point_id(q.points[1])] = number_run("mass_flow_rate", 6.0, 5.5, 6.5, 0.004);   // slower, worse
+  runs[point_id(q.points[2])] = number_run("mass_flow_rate", cel(0.02), 5.7, 5.9, 2.0);
+  runs[point_id(q.points[3])] = number_run("mass_flow_rate", cel(0.01), 5.3, 5.5, 11.0);
+  runs[point_id(q.points[4])] = number_run("mass_flow_rate", cel(0.005), 5.1, 5.3, 170.0);
+  runs[point_id(q.points[5])] = number_run("mass_flow_rate", 7.0, 6.8, 7.2, 900.0);
+  const BenchQuestionTable t = tabulate(q, runs);
+  ASSERT_TRUE(t.reference.value);
+  EXPECT_NEAR(*t.reference.value, 5.0, 1e-9);
+  EXPECT_NE(t.reference.source.find("Richardson"), std::string::npos);
+  EXPECT_NE(t.reference.agreement.find("disagree"), std::string::npos);
+  EXPECT_NEAR(*t.answers[0].error, 0.1, 1e-12);
+  EXPECT_TRUE(*t.answers[0].band_holds_reference);
+  EXPECT_FALSE(*t.answers[1].band_holds_reference);
+  EXPECT_NEAR(*t.answers[4].error, 0.2 / 5.0, 1e-12);
+  const std::vector<bool> front{t.answers[0].pareto, t.answers[1].pareto, t.answers[2].pareto,
+                                t.answers[3].pareto, t.answers[4].pareto, t.answers[5].pareto};
+  // beverloo (fastest), CEL 10 mm (cheaper than CEL 5, closer than beverloo), CEL 5 mm (closest)
+  EXPECT_EQ(front, (std::vector<bool>{true, false, false, true, true, false}));
+  const auto chart = error_against_time_chart(t);
+  ASSERT_TRUE(chart);
+  EXPECT_TRUE(chart->x.logarithmic && chart->y.logarithmic);
+  EXPECT_EQ(chart->series.back().label, "Pareto front");
+  EXPECT_EQ(chart->series.back().x, (std::vector<double>{0.003, 11.0, 170.0}));
+}
+
+// Labels are right (0) or wrong (1) against the finest CEL level; a point not run, one that
+// failed and one without the quantity have no error and are not on the front.
+TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
+  BenchQuestion q{"arch", "arch", "cases/pilot_hopper.toml", {}, true, {}};
+  q.points = {point("jenike", "L0"), point("static arch", "L0"),
+              point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01), point("not run", "L3"),
+              point("failed", "L3")};
+  for (auto& p : q.points) p.quantity = "arching";
+  std::map<std::string, BenchRun> runs;
+  runs[point_id(q.points[0])] = label_run("arching", "arched", 0.002);
+  runs[point_id(q.points[1])] = label_run("arching", "flowing", 0.002);
+  runs[point_id(q.points[2])] = label_run("arching", "flowing", 2.0);
+  runs[point_id(q.points[3])] = label_run("arching", "arched", 15.0);
+  runs[point_id(q.points[5])] = label_run("other", "x", 1.0);
+  runs[point_id(q.points[5])].status = "failed: blew up";
+  const BenchQuestionTable t = tabulate(q, runs);
+  EXPECT_EQ(t.reference.label, "arched");
+  EXPECT_EQ(*t.answers[0].error, 0.0);
+  EXPECT_EQ(*t.answers[1].error, 1.0);
+  EXPECT_EQ(*t.answers[2].error, 1.0);
+  EXPECT_FALSE(t.answers[3].error);  // the reference's own run has no error to show
+  EXPECT_FALSE(t.answers[4].error);
+  EXPECT_EQ(t.answers[4].label, "not run");
+  EXPECT_FALSE(t.answers[5].error);
+  EXPECT_FALSE(t.answers[5].pareto);
+  EXPECT_FALSE(error_against_time_chart(t));  // labels have no log-log chart
+  const std::string csv = bench_csv({t});
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);  // header + one row per point
+  EXPECT_NE(csv.find(",failed: blew up,"), std::string::npos);
+}
+
+// A saved run reads back for the same invocation only; a damaged file is not read.
+TEST(BenchRunFile, ReadsBackForTheSameInvocationOnly) {
+  const auto dir = std::filesystem::temp_directory_path() / ("feedflow_bench_run_" + std::to_string(::getpid()));
+  BenchRun r = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.25);
+  r.invocation = "design cases/pilot_hopper.toml";
+  r.cores = 2;
+  save_bench_run(dir, r);
+  const auto back = saved_bench_run(dir, r.invocation);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->wall_seconds, 0.25);
+  EXPECT_EQ(back->cores, 2);
+  EXPECT_EQ(back->results, r.results);
+  EXPECT_FALSE(saved_bench_run(dir, "design cases/other.toml"));
+  std::ofstream(dir / "run.json") << "{ damaged";
+  EXPECT_FALSE(saved_bench_run(dir, r.invocation));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace feedflow
