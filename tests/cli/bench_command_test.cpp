@@ -58,3 +58,31 @@ TEST(BenchCommand, UnknownQuestionIsRefusedByName) {
 }
 
 }  // namespace
+
+namespace {
+
+// One real bench question end to end (label long, about 20 s on 2 cores): the quick points of
+// the discharge rate at 60 mm give a CEL reference at 10 mm cells (3 across the half outlet;
+// 20 mm cells, 1.5 across, are a point but not the reference), and every reduced model has an
+// error against it, the published band of the pilot rig (seed: about 3-6 kg/s) holding it.
+TEST(BenchCommand, LONG_DischargeRateQuestionEndToEnd) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const feedflow::testing::Run r =
+      run_feedflow("bench --quick --only hopper_discharge_rate_60mm --out b --report", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto q = nlohmann::json::parse(slurp(dir / "b" / "bench.json"))["questions"][0];
+  const double reference = q["reference"]["value"].get<double>();
+  EXPECT_GT(reference, 3.0);
+  EXPECT_LT(reference, 8.0);
+  int errors = 0;
+  for (const auto& a : q["answers"])
+    if (a["rung"] == "L0") {
+      ASSERT_TRUE(a["error"].is_number()) << a.dump();
+      ++errors;
+    }
+  EXPECT_EQ(errors, 4);
+  EXPECT_TRUE(fs::exists(dir / "b" / "report.pdf"));
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -88,7 +88,7 @@ TEST_F(FeedflowCli, BadCaseExitsTwoAndWritesNothing) {
 
 // Reserved commands say "not yet available" and exit 3, whatever their arguments.
 TEST_F(FeedflowCli, ReservedCommandsExitThree) {
-  for (const auto* cmd : {"sweep x", "bench"}) {
+  for (const auto* cmd : {"sweep x", "sweep"}) {
     SCOPED_TRACE(cmd);
     const auto r = run_feedflow(cmd, dir_);
     EXPECT_EQ(r.exit_code, 3);
