@@ -91,18 +91,25 @@ void add_cel_points(BenchQuestion& q, const std::string& quantity, std::optional
     }
 }
 
-// DEM with each normal law; the seed's law at the seed's resolution is the reference.
-void add_dem_points(BenchQuestion& q, const std::string& quantity) {
-  for (std::string_view law : {std::string_view("hertz"), kSeedLaw}) {
+// DEM with each normal law at the scene's default resolution (the seed's law: the reference),
+// and the seed's law on another slab depth (`slab`, "" for none) and at half the stable step.
+void add_dem_points(BenchQuestion& q, const std::string& quantity, const std::string& slab) {
+  auto add = [&](std::string setting, std::vector<std::string> sets, ReferenceRole role) {
     BenchPoint p;
-    p.setting = "DEM " + std::string(law);
+    p.setting = std::move(setting);
     p.rung = "L3";
     p.quantity = quantity;
     p.solver = Solver::dem;
-    p.sets = {"dem.normal_law=" + std::string(law)};
-    p.role = law == kSeedLaw ? ReferenceRole::dem_reference : ReferenceRole::none;
+    p.sets = std::move(sets);
+    p.role = role;
     q.points.push_back(std::move(p));
-  }
+  };
+  const std::string seed_law = "dem.normal_law=" + std::string(kSeedLaw);
+  add("DEM hertz", {"dem.normal_law=hertz"}, ReferenceRole::none);
+  add("DEM " + std::string(kSeedLaw), {seed_law}, ReferenceRole::dem_reference);
+  if (!slab.empty()) add("DEM " + std::string(kSeedLaw) + ", slab " + slab, {seed_law, "dem.slab_depth=" + slab}, ReferenceRole::none);
+  add("DEM " + std::string(kSeedLaw) + ", half the stable step", {seed_law, "dem.time_step_safety=0.5"},
+      ReferenceRole::none);
 }
 
 BenchQuestion hopper_question(std::string id, std::string title, double outlet, bool categorical) {
@@ -149,7 +156,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
           p.quantity = "critical_outlet_width";
           p.label_rule = BenchPoint::LabelRule{h.outlet, "arched", "flowing"};
         }
-    add_dem_points(q, h.quantity);
+    add_dem_points(q, h.quantity, "12mm");  // four diameters against the default one layer
     questions.push_back(std::move(q));
   }
 
@@ -165,7 +172,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
     // The deposit the cells must resolve: about 45 mm at 29.5 deg, 3.5 mm at 37 deg (L0).
     const Feature deposit{angle == std::string("37") ? 3.5 * kMm : 45 * kMm, "the deposit"};
     add_cel_points(q, "deposit_thickness_mid_ramp", std::nullopt, deposit, angle == std::string("29_5") ? 1 : 0);
-    add_dem_points(q, "deposit_thickness_mid_ramp");
+    add_dem_points(q, "deposit_thickness_mid_ramp", "24mm");
     questions.push_back(std::move(q));
   }
 
@@ -178,7 +185,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
       const std::string quantity = regime ? "regime" : "dynamic_angle_of_repose";
       add_design_point(q, quantity, "L0");
       add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});
-      add_dem_points(q, quantity);
+      add_dem_points(q, quantity, "18mm");  // the default is the seed's whole 3D drum
       questions.push_back(std::move(q));
     }
   }
