@@ -120,12 +120,13 @@ BenchQuestion hopper_question(std::string id, std::string title, double outlet, 
 
 }  // namespace
 
-std::string point_id(const BenchPoint& point) {
-  std::string id = point.rung + "_" + point.setting;
-  for (char& c : id)
+std::string file_name_friendly(std::string text) {
+  for (char& c : text)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
-  return id;
+  return text;
 }
+
+std::string point_id(const BenchPoint& point) { return file_name_friendly(point.rung + "_" + point.setting); }
 
 std::vector<BenchQuestion> seed_bench_questions() {
   std::vector<BenchQuestion> questions;

@@ -56,7 +56,9 @@ struct BenchQuestion {
 // outlet on 20 mm cells reads "arched" for a hopper that flows).
 constexpr double kReferenceCellsAcross = 3.0;
 
-// A point's identity in the question: "<rung> <setting>", made file-name friendly.
+// `text` as one file name: anything but letters, digits, '.' and '-' becomes '_'.
+std::string file_name_friendly(std::string text);
+// A point's identity in the question: "<rung>_<setting>", file-name friendly.
 std::string point_id(const BenchPoint& point);
 
 // The questions of the seed's scenes with all their points (pilot hopper, inclined plane, drum).

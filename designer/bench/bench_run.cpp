@@ -16,12 +16,6 @@
 namespace feedflow {
 namespace {
 
-std::string file_name_friendly(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
-  return s;
-}
-
 std::string seconds_text(double s) {
   std::ostringstream o;
   o << s << "s";
