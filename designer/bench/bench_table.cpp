@@ -78,6 +78,7 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
                                               {*a->value, *b->value, *c->value});
       r.value = e.value;
       r.error_bar = e.error_bar;
+      if (!e.order) r.only_run = point_id(*c->point);  // no order: the finest run is the value
       r.source = "CEL Richardson (" + millimetres(*a->point->cell_size) + ", " + millimetres(*b->point->cell_size) +
                  ", " + millimetres(*c->point->cell_size) + " mm; " +
                  (e.order ? "observed order " + format_number(*e.order, 3) + (e.asymptotic ? "" : ", outside the asymptotic range")

@@ -112,6 +112,26 @@ TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
   EXPECT_EQ(chart->series.back().x, (std::vector<double>{0.003, 11.0, 170.0}));
 }
 
+// Levels that do not converge monotonically (the drum at 20 rpm: 36.7, 38.3, 45.7 deg on 20, 10,
+// 5 mm) give no order: the finest run is the reference, with the spread as its error bar, and
+// has no error of its own (it is not a point on the front).
+TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
+  BenchQuestion q{"angle", "angle", "cases/rotating_drum_20rpm.toml", {}, false, {}};
+  q.points = {point("design", "L0"), point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
+              point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005)};
+  std::map<std::string, BenchRun> runs;
+  const double angles[] = {39.1, 36.7, 38.3, 45.7};
+  for (int k = 0; k < 4; ++k) runs[point_id(q.points[k])] = number_run("mass_flow_rate", angles[k], angles[k], angles[k], k + 1.0);
+  const BenchQuestionTable t = tabulate(q, runs);
+  EXPECT_NE(t.reference.source.find("no observed order"), std::string::npos);
+  EXPECT_DOUBLE_EQ(*t.reference.value, 45.7);
+  EXPECT_NEAR(*t.reference.error_bar, 9.0, 1e-9);
+  EXPECT_FALSE(t.answers[3].error);
+  EXPECT_FALSE(t.answers[3].pareto);
+  EXPECT_NEAR(*t.answers[0].error, (45.7 - 39.1) / 45.7, 1e-12);
+}
+
 // Labels are right (0) or wrong (1) against the finest CEL level; a point not run, one that
 // failed and one without the quantity have no error and are not on the front.
 TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
