@@ -9,8 +9,9 @@ namespace feedflow {
 namespace {
 
 constexpr double kMm = 1e-3;
-// CEL cell sizes: the refinement series halves the cell from 20 mm until three levels resolve
-// the feature (kReferenceCellsAcross) or the cell would be below 1 mm.
+// CEL cell sizes: the refinement series halves the cell from 20 mm down to 2.5 mm at least, and
+// on until three levels resolve the feature (kReferenceCellsAcross) or the cell would be below
+// 1 mm.
 constexpr double kCoarsestCell = 20 * kMm;
 constexpr double kFinestCell = 1 * kMm;
 constexpr std::string_view kSeedLaw = "hysteretic_nonlinear2";
