@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add_element_test_command(app, exit_code);
   add_simulate_command(app, exit_code);
   add_bench_command(app, exit_code);
+  add_calibrate_command(app, exit_code);
   add_reserved_commands(app, exit_code);
 
   try {

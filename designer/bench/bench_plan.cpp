@@ -16,14 +16,6 @@ constexpr double kCoarsestCell = 20 * kMm;
 constexpr double kFinestCell = 1 * kMm;
 constexpr std::string_view kSeedLaw = "hysteretic_nonlinear2";
 
-// "2.5mm": a value as typed after --set (no space: the invocation is a runnable command).
-std::string millimetres(double metres) {
-  std::string s = std::to_string(metres / kMm);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s + "mm";
-}
-
 // Every alternative of a model key at the reduced rung (the design check).
 void add_model_alternatives(BenchQuestion& q, std::string_view key, const std::string& quantity,
                             const std::string& rung) {
@@ -63,11 +55,11 @@ void add_cel_points(BenchQuestion& q, const std::string& quantity, std::optional
   int level = 0, resolving = 0;
   for (double h = kCoarsestCell; h >= kFinestCell && (resolving < 3 || h >= 2.5 * kMm); h *= 0.5) {
     BenchPoint p;
-    p.setting = "CEL cells " + millimetres(h);
+    p.setting = "CEL cells " + millimetres_setting(h);
     p.rung = "L2";
     p.quantity = quantity;
     p.solver = Solver::cel;
-    p.sets = {"cel.cell_size=" + millimetres(h)};
+    p.sets = {"cel.cell_size=" + millimetres_setting(h)};
     p.time = time;
     p.cell_size = h;
     const double across = feature.length / h;
@@ -115,11 +107,18 @@ void add_dem_points(BenchQuestion& q, const std::string& quantity, const std::st
 
 BenchQuestion hopper_question(std::string id, std::string title, double outlet, bool categorical) {
   BenchQuestion q{std::move(id), std::move(title), "cases/pilot_hopper.toml",
-                  {"hopper.outlet_width=" + millimetres(outlet)}, categorical, {}};
+                  {"hopper.outlet_width=" + millimetres_setting(outlet)}, categorical, {}, {}, {}};
   return q;
 }
 
 }  // namespace
+
+std::string millimetres_setting(double metres) {
+  std::string s = std::to_string(metres / kMm);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s + "mm";
+}
 
 std::string file_name_friendly(std::string text) {
   for (char& c : text)
@@ -166,7 +165,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
     BenchQuestion q{std::string("chute_stopping_thickness_") + angle,
                     std::string("Inclined plane at ") + (angle == std::string("37") ? "37" : "29.5") +
                         " deg: deposit thickness mid-ramp",
-                    std::string("cases/inclined_plane_") + angle + ".toml", {}, false, {}};
+                    std::string("cases/inclined_plane_") + angle + ".toml", {}, false, {}, {}, {}};
     add_model_alternatives(q, "chute.stopping_thickness", "stopping_thickness", "L0");
     add_model_alternatives(q, "chute.deposit", "deposit_thickness_mid_ramp", "L1");
     // The flow comes to rest after ~9 s at 29.5 deg and ~30 s at 37 deg (L1): a CEL run at
@@ -183,7 +182,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
       BenchQuestion q{std::string("drum_") + (regime ? "regime_" : "angle_") + rpm + "rpm",
                       std::string("Rotating drum at ") + rpm + " rpm: " +
                           (regime ? "bed regime" : "dynamic angle of repose"),
-                      "cases/rotating_drum_20rpm.toml", {std::string("drum.speed=") + rpm + "rpm"}, regime, {}};
+                      "cases/rotating_drum_20rpm.toml", {std::string("drum.speed=") + rpm + "rpm"}, regime, {}, {}, {}};
       const std::string quantity = regime ? "regime" : "dynamic_angle_of_repose";
       add_design_point(q, quantity, "L0");
       add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});

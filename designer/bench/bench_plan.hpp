@@ -48,6 +48,10 @@ struct BenchQuestion {
   std::vector<std::string> sets;     // the question's setting: "hopper.outlet_width=60mm"
   bool categorical = false;          // a label (arching, regime), judged right or wrong
   std::vector<BenchPoint> points;
+  // The order two CEL levels extrapolate with, and where it was measured; none: the donor-cell
+  // remap's formal order 1.
+  std::optional<double> two_level_order;
+  std::string two_level_order_source;
 };
 
 // A CEL level enters the reference only when it puts at least this many cells across the
@@ -55,6 +59,9 @@ struct BenchQuestion {
 // runs are bench points, shown with their error, but cannot resolve the answer (a 60 mm
 // outlet on 20 mm cells reads "arched" for a hopper that flows).
 constexpr double kReferenceCellsAcross = 3.0;
+
+// "2.5mm": a length as typed after --set (no space: an invocation is a runnable command).
+std::string millimetres_setting(double metres);
 
 // `text` as one file name: anything but letters, digits, '.' and '-' becomes '_'.
 std::string file_name_friendly(std::string text);

@@ -103,4 +103,16 @@ void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
   write_file_atomically(folder / "run.json", j.dump(2) + "\n");
 }
 
+BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
+                          const std::filesystem::path& folder, bool& made) {
+  if (auto saved = saved_bench_run(folder, bench_invocation(q, p))) {
+    made = false;
+    return std::move(*saved);
+  }
+  made = true;
+  BenchRun run = run_bench_point(q, p, source_root, folder);
+  if (run.status != "interrupted") save_bench_run(folder, run);
+  return run;
+}
+
 }  // namespace feedflow

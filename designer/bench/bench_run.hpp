@@ -40,4 +40,9 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
 // Writes folder/run.json whole (a temporary renamed over it).
 void save_bench_run(const std::filesystem::path& folder, const BenchRun& run);
 
+// The point's run read back from `folder`, or made (and saved, unless interrupted); `made` says
+// which.
+BenchRun run_or_read_back(const BenchQuestion& question, const BenchPoint& point,
+                          const std::filesystem::path& source_root, const std::filesystem::path& folder, bool& made);
+
 }  // namespace feedflow

@@ -54,7 +54,8 @@ std::string millimetres(double metres) { return format_number(metres * 1e3, 3); 
 
 // The CEL refinement series' estimate: Richardson on the finest three levels, two levels with
 // the donor-cell remap's formal order 1, or the one level there is.
-std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answers, bool categorical) {
+std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answers, const BenchQuestion& q) {
+  const bool categorical = q.categorical;
   std::vector<const BenchAnswer*> levels;
   for (const auto& a : answers)
     if (a.point->role == ReferenceRole::cel_refinement && a.point->cell_size && (a.value || (categorical && a.run && a.run->done() && !a.label.empty() && a.label.rfind("no ", 0) != 0)))
@@ -89,12 +90,15 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
   }
   if (n >= 2) {
     const BenchAnswer *b = levels[n - 2], *c = levels[n - 1];
-    const RichardsonEstimate e =
-        richardson_two_levels({*b->point->cell_size, *c->point->cell_size}, {*b->value, *c->value}, 1.0);
+    const RichardsonEstimate e = richardson_two_levels({*b->point->cell_size, *c->point->cell_size},
+                                                       {*b->value, *c->value}, q.two_level_order.value_or(1.0));
     r.value = e.value;
     r.error_bar = e.error_bar;
     r.source = "CEL two levels (" + millimetres(*b->point->cell_size) + ", " + millimetres(*c->point->cell_size) +
-               " mm; formal order 1, safety 3)";
+               " mm; " +
+               (q.two_level_order ? "order " + format_number(*q.two_level_order, 3) + " " + q.two_level_order_source
+                                  : std::string("formal order 1")) +
+               ", safety 3)";
     return r;
   }
   r.value = levels.back()->value;
@@ -141,7 +145,7 @@ BenchQuestionTable tabulate(const BenchQuestion& q, const std::map<std::string, 
   BenchQuestionTable t;
   t.question = &q;
   for (const auto& p : q.points) t.answers.push_back(answer_of(p, runs));
-  const auto cel = cel_reference(t.answers, q.categorical);
+  const auto cel = cel_reference(t.answers, q);
   const auto dem = dem_reference(t.answers, q.categorical);
   if (cel) t.reference = *cel;
   else if (dem) t.reference = *dem;

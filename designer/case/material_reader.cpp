@@ -1,5 +1,6 @@
 #include "designer/case/material_reader.hpp"
 
+#include "designer/case/calibration_reader.hpp"
 #include "designer/case/table_reader.hpp"
 #include "designer/case/toml_text.hpp"
 
@@ -8,7 +9,7 @@ namespace {
 
 constexpr std::string_view kTopKeys[] = {"name",  "description",     "bulk",         "psd",
                                          "hypoplastic", "flow_properties", "surface_flow",
-                                         "drum_flow",   "dem"};
+                                         "drum_flow",   "dem",             "calibration"};
 constexpr std::string_view kDemKeys[] = {"particle", "particle_particle", "particle_wall"};
 
 const toml::table* subtable(const toml::table& parent, std::string_view key,
@@ -48,6 +49,9 @@ class MaterialLayer {
     optional_section("flow_properties", table, root, material_.flow, flow_property_fields());
     optional_section("surface_flow", table, root, material_.surface_flow, surface_flow_fields());
     optional_section("drum_flow", table, root, material_.drum_flow, drum_flow_fields());
+
+    if (const auto* calibration = subtable(table, "calibration", root))
+      material_.calibration = read_calibration(*calibration, context("calibration", overriding_));
 
     if (const auto* dem = subtable(table, "dem", root)) {
       const bool complete = !material_.dem.has_value() || !overriding_;

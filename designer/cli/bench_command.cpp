@@ -120,19 +120,20 @@ BenchRuns make_runs(const BenchArguments& args, const std::vector<BenchQuestion>
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
-    if (auto saved = saved_bench_run(dir, bench_invocation(*q, *p))) {
-      runs.by_folder[dir] = std::move(*saved);
+    if (say && !saved_bench_run(dir, bench_invocation(*q, *p)))
+      std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
+    bool made = false;
+    BenchRun run = run_or_read_back(*q, *p, ".", dir, made);
+    if (!made) {
+      runs.by_folder[dir] = std::move(run);
       ++runs.read_back;
       continue;
     }
-    if (say) std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
-    BenchRun run = run_bench_point(*q, *p, ".", dir);
     if (say) std::cout << " " << format_number(run.wall_seconds, 3) << " s" << (run.done() ? "" : " (" + run.status + ")") << '\n';
     if (run.status == "interrupted" || interrupt_requested()) {
       runs.interrupted = true;
       return runs;
     }
-    save_bench_run(dir, run);
     runs.by_folder[dir] = std::move(run);
     ++runs.made;
   }

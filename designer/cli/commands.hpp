@@ -17,6 +17,8 @@ void add_element_test_command(CLI::App& app, int& exit_code);
 void add_simulate_command(CLI::App& app, int& exit_code);
 // bench: run time against error for every rung and setting of the seed's design questions.
 void add_bench_command(CLI::App& app, int& exit_code);
+// calibrate: the reduced models' discharge coefficients fitted to a full rung.
+void add_calibrate_command(CLI::App& app, int& exit_code);
 // sweep: a reserved name that says "not yet available".
 void add_reserved_commands(CLI::App& app, int& exit_code);
 

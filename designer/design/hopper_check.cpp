@@ -36,8 +36,26 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
                   "interim rule 'conical limit + 8-12 deg' (no verified closed form for plane flow).");
   out.push_back("Continuum arching theory does not model interlocking of particles; the (3-8) d_max rule covers it "
                 "roughly.");
-  out.push_back("Discharge: " + nominal.rate_model + "; expect +-20-30 % before calibration; Beverloo tends to "
-                "overpredict for elongated particles.");
+  if (a.material.discharge_calibration && a.material.discharge_calibration->geometry == flow_geometry(h)) {
+    const auto& fitted = c.material.calibration->discharge;
+    const auto row = fitted.find(std::string(nominal.rate_row->name));
+    std::string figures;
+    if (row != fitted.end())
+      for (const char* key : {"fit_rms_error", "held_out_max_error"})
+        if (row->second.figures.count(key))
+          figures += std::string(figures.empty() ? "" : ", ") + (key == std::string("fit_rms_error") ? "rms error " : "held-out max error ") +
+                     row->second.figures.at(key);
+    out.push_back("Discharge: " + nominal.rate_model + " (the material's [calibration]: coefficients fitted over " +
+                  std::to_string(c.material.calibration->points) + " design points" +
+                  (figures.empty() ? "" : "; " + figures) + "; valid within the fitted outlet widths and semi-angles).");
+  } else {
+    out.push_back("Discharge: " + nominal.rate_model + "; expect +-20-30 % before calibration; Beverloo tends to "
+                  "overpredict for elongated particles.");
+    if (a.material.discharge_calibration)
+      out.push_back("The material's calibrated discharge coefficients are for " +
+                    std::string(c.material.calibration->geometry) + " hoppers: this one uses the published ones.");
+  }
+  if (!a.material.calibration_note.empty()) out.push_back(a.material.calibration_note + ".");
   if (nominal.drag_factor < 1.0)
     out.push_back("Air drag (Carleton) lowers the rate to " + format_number(nominal.drag_factor * 100, 3) +
                   " % of the drag-free value with d = d50; finer fractions would lower it further.");

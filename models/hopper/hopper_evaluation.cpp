@@ -18,11 +18,17 @@ HopperEvaluation evaluate_hopper(const Hopper& h, double theta, double width, co
   e.johanson = johanson_discharge(g, theta, width, e.flow_factor, ff_curve, m.density);
   const DischargeInputs in{g, theta, width, e.johanson, m.median_size.value_or(0.0), v.effective_friction_angle,
                            v.wall_friction_angle};
+  const auto evaluate_row = [&](const DischargeModel& row) {
+    bool calibrated = false;
+    auto rate = row.evaluate(in, coefficients_for(row, g, m.discharge_calibration, &calibrated));
+    if (rate && calibrated) rate->model += ", " + m.discharge_calibration->source;
+    return rate;
+  };
   e.rate_row = models.discharge;
-  auto discharge = e.rate_row->evaluate(in);
+  auto discharge = evaluate_row(*e.rate_row);
   if (!discharge) {
     e.rate_row = &discharge_models().default_row();
-    discharge = e.rate_row->evaluate(in);
+    discharge = evaluate_row(*e.rate_row);
   }
   e.rate = discharge->rate;
   e.rate_model = std::move(discharge->model);

@@ -7,8 +7,6 @@
 #include "models/units/angle.hpp"
 
 namespace feedflow {
-namespace {
-}
 
 HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& density) {
   if (!m.flow)
@@ -25,6 +23,24 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
   if (m.psd) {
     hm.median_size = m.psd->d50;
     hm.largest_size = m.psd->d90;
+  }
+  if (m.calibration && !m.calibration->discharge.empty()) {
+    const Calibration& c = *m.calibration;
+    if (c.density_model != density.name) {
+      hm.calibration_note = "the material's calibrated discharge coefficients are not used: they were fitted with "
+                            "hopper.density=" + c.density_model + ", this check uses " + std::string(density.name);
+    } else {
+      DischargeCalibration dc;
+      dc.geometry = c.geometry == "conical" ? FlowGeometry::conical : FlowGeometry::plane;
+      dc.source = "calibrated against " + c.rung + " (" + c.scene + ", " + c.date + ", " + c.commit + ")";
+      for (const auto& [row_name, fitted] : c.discharge) {
+        const DischargeModel& row = discharge_models().at(row_name);  // the reader checked the names
+        std::vector<double> values;
+        for (const auto& k : row.coefficients) values.push_back(fitted.coefficients.at(std::string(k.name)));
+        dc.coefficients.emplace(row_name, std::move(values));
+      }
+      hm.discharge_calibration = std::move(dc);
+    }
   }
   return hm;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "models/hopper/bulk_density_models.hpp"
+#include "models/hopper/discharge_models.hpp"
 #include "models/hopper/flow_function.hpp"
 #include "models/material/material.hpp"
 
@@ -19,6 +20,10 @@ struct HopperMaterial {
   std::optional<double> median_size;         // d50 [m]
   std::optional<double> largest_size;        // d90, taken as d_max [m]
   std::optional<double> particle_density;    // envelope density, for the air-drag correction
+  // The material's calibrated discharge coefficients, when they were fitted with this density
+  // model; `calibration_note` says why a [calibration] is not used otherwise.
+  std::optional<DischargeCalibration> discharge_calibration;
+  std::string calibration_note;
 
   // Throws InputError when the material lacks the [flow_properties] section.
   static HopperMaterial of(const Material& m,

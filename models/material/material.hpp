@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "models/core/field_spec.hpp"
+#include "models/material/calibration.hpp"
 #include "models/material/dem_parameters.hpp"
 #include "models/material/flow_properties.hpp"
 #include "models/material/hypoplastic_parameters.hpp"
@@ -39,6 +40,7 @@ struct Material {
   std::optional<FlowProperties> flow;              // [flow_properties]
   std::optional<SurfaceFlowProperties> surface_flow;  // [surface_flow]
   std::optional<DrumFlowProperties> drum_flow;     // [drum_flow]
+  std::optional<Calibration> calibration;          // [calibration], written by `feedflow calibrate`
   std::map<std::string, std::string> sources;  // dotted key ("bulk.density") -> source
 };
 

@@ -78,7 +78,7 @@ TEST(BenchPlan, EveryPointIsAValidCaseWithReferenceRuns) {
 // says so, the Pareto front is what no point beats on both time and error, and a DEM reference
 // far outside both error bars is reported as a disagreement.
 TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
-  BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}};
+  BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}, {}, {}};
   q.points = {point("beverloo", "L0"), point("johanson", "L0"),
               point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
               point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
@@ -116,7 +116,7 @@ TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
 // 5 mm) give no order: the finest run is the reference, with the spread as its error bar, and
 // has no error of its own (it is not a point on the front).
 TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
-  BenchQuestion q{"angle", "angle", "cases/rotating_drum_20rpm.toml", {}, false, {}};
+  BenchQuestion q{"angle", "angle", "cases/rotating_drum_20rpm.toml", {}, false, {}, {}, {}};
   q.points = {point("design", "L0"), point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
               point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
               point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005)};
@@ -135,7 +135,7 @@ TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
 // Labels are right (0) or wrong (1) against the finest CEL level; a point not run, one that
 // failed and one without the quantity have no error and are not on the front.
 TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
-  BenchQuestion q{"arch", "arch", "cases/pilot_hopper.toml", {}, true, {}};
+  BenchQuestion q{"arch", "arch", "cases/pilot_hopper.toml", {}, true, {}, {}, {}};
   q.points = {point("jenike", "L0"), point("static arch", "L0"),
               point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
               point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01), point("not run", "L3"),

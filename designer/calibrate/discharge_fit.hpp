@@ -1,0 +1,51 @@
+#pragma once
+// Fits each hopper.discharge row's free coefficients (Beverloo's C and k, the factor on a
+// theory's rate) to full-rung discharge rates by least squares on the relative error, through
+// the design check's own evaluation (so the design check reproduces the fit exactly), and
+// measures the rows and the design band before and after, on the fitted and the held-out points.
+// A coefficient the fit takes out of its physical range (Beverloo's k past 3) is held at its
+// published value and the others are fitted again: a curve through the points with meaningless
+// coefficients would not extrapolate.
+#include <string>
+#include <vector>
+
+#include "designer/design/hopper_estimates.hpp"
+
+namespace feedflow {
+
+// One design point: the hopper at its outlet and semi-angle, and the full rung's rate there.
+struct DischargeObservation {
+  Hopper hopper;
+  double reference = 0.0;  // [kg/s], the whole outlet (as results.json's mass_flow_rate)
+  double error_bar = 0.0;  // [kg/s]
+  bool held_out = false;
+};
+
+struct DischargeRowFit {
+  const DischargeModel* row = nullptr;
+  std::vector<double> before, after;           // coefficients, published and fitted
+  std::vector<double> standard_errors;         // of the fitted ones (0 for one held at its published value)
+  std::vector<std::string> held;               // coefficients held at their published value, and why
+  std::vector<double> rate_before, rate_after; // [kg/s] per observation
+  double fit_rms_before = 0.0, fit_rms_after = 0.0;          // relative error, fitted points
+  double held_out_max_before = 0.0, held_out_max_after = 0.0; // largest relative error, held-out points
+  std::string failure;                         // why the row kept its published coefficients
+};
+
+struct DischargeFit {
+  std::vector<DischargeRowFit> rows;           // the rows that apply to the geometry
+  DischargeCalibration calibration;            // the fitted rows, for the material
+  std::vector<double> design_before, design_after;        // the design check's q_m [kg/s]
+  std::vector<bool> band_holds_before, band_holds_after;  // its band holds the reference
+};
+
+// `material`: the published material (its own calibration ignored); `models`: the design
+// check's rows (the default row's fit is what `design` reports). Throws std::invalid_argument
+// without fitted observations or with hoppers of two geometries.
+DischargeFit fit_discharge(const std::vector<DischargeObservation>& observations, HopperMaterial material,
+                           const HopperModels& models = {});
+
+// |a / b - 1|.
+double relative_error(double a, double b);
+
+}  // namespace feedflow

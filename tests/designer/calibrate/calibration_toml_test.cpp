@@ -1,0 +1,130 @@
+// A calibrated material round-trips (designer/calibrate/calibration_toml, designer/case/
+// calibration_reader): the [calibration] table written into a material file reads back with the
+// same coefficients, a second calibration replaces the first and keeps the rest of the file, a
+// broken table is refused naming its key, and the design check then uses the coefficients and
+// says so.
+#include <gtest/gtest.h>
+
+#include "designer/calibrate/calibration_toml.hpp"
+#include "designer/case/case_loader.hpp"
+#include "designer/case/material_reader.hpp"
+#include "designer/design/design_check.hpp"
+#include "models/core/errors.hpp"
+#include "models/material/builtin_materials.hpp"
+#include "models/units/angle.hpp"
+
+namespace feedflow {
+namespace {
+
+std::string pine_text() {
+  for (const auto& b : builtin_material_texts())
+    if (b.name == "loblolly_pine") return std::string(b.toml);
+  throw std::runtime_error("no built-in pine");
+}
+
+Calibration example(double johanson_factor) {
+  Calibration c;
+  c.against = "cel";
+  c.rung = "L2 CEL-FEM, 3 and 6 cells across the half outlet";
+  c.scene = "pilot_hopper";
+  c.geometry = "wedge";
+  c.density_model = "compressible";
+  c.commit = "0123456789";
+  c.date = "2026-12-02";
+  c.discharge["johanson"].coefficients = {{"factor", johanson_factor}};
+  c.discharge["johanson"].figures = {{"fit_rms_error", "4.2 %"}, {"held_out_max_error", "6.1 %"}};
+  c.discharge["beverloo"].coefficients = {{"c", 1.2345678}, {"k", 0.25}};
+  return c;
+}
+
+const std::vector<CalibrationPointRecord> kPoints = {{0.04, 15 * kDegree, 1.5, 0.1, false, "CEL two levels"},
+                                                     {0.045, 25 * kDegree, 1.9, 0.12, true, "CEL two levels"}};
+
+Material read(const std::string& text) {
+  return read_material(parse_material_text(text, "pine.toml"), "pine.toml", "test");
+}
+
+// Written, read back: the same coefficients (bit for bit), figures, provenance and points.
+TEST(CalibrationToml, CalibratedMaterialRoundTrips) {
+  const Material m = read(with_calibration(pine_text(), calibration_toml(example(1.83), kPoints)));
+  ASSERT_TRUE(m.calibration);
+  const Calibration& c = *m.calibration;
+  EXPECT_EQ(c.against, "cel");
+  EXPECT_EQ(c.geometry, "wedge");
+  EXPECT_EQ(c.density_model, "compressible");
+  EXPECT_EQ(c.commit, "0123456789");
+  EXPECT_EQ(c.points, 2u);
+  EXPECT_DOUBLE_EQ(c.discharge.at("johanson").coefficients.at("factor"), 1.83);
+  EXPECT_DOUBLE_EQ(c.discharge.at("beverloo").coefficients.at("c"), 1.2345678);
+  EXPECT_DOUBLE_EQ(c.discharge.at("beverloo").coefficients.at("k"), 0.25);
+  EXPECT_EQ(c.discharge.at("johanson").figures.at("held_out_max_error"), "6.1 %");
+  // Everything else of the material is as the file without calibration says.
+  const Material plain = read(pine_text());
+  EXPECT_EQ(m.sources, plain.sources);
+  EXPECT_DOUBLE_EQ(m.bulk.density, plain.bulk.density);
+}
+
+// A second calibration replaces the first whole; the rest of the text is kept byte for byte.
+TEST(CalibrationToml, ASecondCalibrationReplacesTheFirst) {
+  const std::string once = with_calibration(pine_text(), calibration_toml(example(1.83), kPoints));
+  const std::string twice = with_calibration(once, calibration_toml(example(2.5), {}));
+  EXPECT_EQ(twice.find("1.83"), std::string::npos);
+  EXPECT_EQ(read(twice).calibration->points, 0u);
+  EXPECT_DOUBLE_EQ(read(twice).calibration->discharge.at("johanson").coefficients.at("factor"), 2.5);
+  const std::string head = twice.substr(0, twice.find("# Written by `feedflow calibrate`"));
+  std::string original = pine_text();
+  while (!original.empty() && original.back() == '\n') original.pop_back();
+  EXPECT_EQ(head, original + "\n\n");
+}
+
+// Unknown rows and coefficients, a coefficient missing, a rung that is not cel or dem: refused
+// with the dotted key.
+TEST(CalibrationToml, BrokenTablesAreRefusedNamingTheKey) {
+  const auto key_of = [](const std::string& calibration) {
+    try {
+      read(pine_text() + "\n" + calibration);
+    } catch (const InputError& e) {
+      return e.key();
+    }
+    return std::string("accepted");
+  };
+  std::string good = calibration_toml(example(1.5), {});
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  EXPECT_EQ(key_of(good), "accepted");
+  EXPECT_EQ(key_of(replaced("[calibration.discharge.beverloo]", "[calibration.discharge.beverlo]")),
+            "calibration.discharge.beverlo");
+  EXPECT_EQ(key_of(replaced("c = 1.2345678", "C2 = 1.2345678")), "calibration.discharge.beverloo.coefficients.C2");
+  EXPECT_EQ(key_of(replaced(", k = 0.25", "")), "calibration.discharge.beverloo.coefficients.k");
+  EXPECT_EQ(key_of(replaced("against = \"cel\"", "against = \"fem\"")), "calibration.against");
+}
+
+// The design check evaluates with the calibrated factor (q_m x 1.83 on the wedge), names the
+// calibration in the model text and the assumptions; a conical hopper keeps the published rate.
+TEST(CalibrationToml, DesignUsesTheCalibrationAndSaysSo) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  const DesignRecord before = design_check(c);
+  c.material = read(with_calibration(pine_text(), calibration_toml(example(1.83), kPoints)));
+  const DesignRecord after = design_check(c);
+  const Estimate& q0 = *find_estimate(before.results, "mass_flow_rate");
+  const Estimate& q1 = *find_estimate(after.results, "mass_flow_rate");
+  EXPECT_NEAR(std::get<double>(q1.value) / std::get<double>(q0.value), 1.83, 1e-9);
+  EXPECT_NE(q1.model.find("calibrated against L2 CEL-FEM"), std::string::npos) << q1.model;
+  bool said = false;
+  for (const auto& a : after.assumptions) said = said || a.find("[calibration]") != std::string::npos;
+  EXPECT_TRUE(said);
+
+  std::get<Hopper>(c.equipment).shape = "conical";
+  std::get<Hopper>(c.equipment).slot_length.reset();
+  Case published = c;
+  published.material.calibration.reset();
+  const DesignRecord cone = design_check(c), cone_published = design_check(published);
+  EXPECT_DOUBLE_EQ(std::get<double>(find_estimate(cone.results, "mass_flow_rate")->value),
+                   std::get<double>(find_estimate(cone_published.results, "mass_flow_rate")->value));
+}
+
+}  // namespace
+}  // namespace feedflow
