@@ -29,8 +29,18 @@ cel::CelScene hopper_scene(const SimulationRequest& request) {
                      "the CEL-FEM scene is plane strain: a wedge hopper is expected, not '" +
                          hopper.shape + "' (use --solver dem or feedflow design)");
   const double phi_w = hopper.wall_friction_angle.value_or(c.material.bulk.wall_friction_angle);
+  const double cell = cel_cell_size(c, default_hopper_cell_size(hopper.outlet_width));
+  const double across = 0.5 * hopper.outlet_width / cell;
+  if (across < kMinimumCellsAcrossHalfOutlet * (1.0 - 1e-9))
+    throw InputError(c.file, "cel.cell_size",
+                     format_quantity(cell, "mm") + " puts " + format_number(across, 2) + " cells across the half outlet (" +
+                         format_quantity(0.5 * hopper.outlet_width, "mm") + "); the CEL hopper needs at least " +
+                         format_number(kMinimumCellsAcrossHalfOutlet, 2) +
+                         " (feedflow bench: the 60 mm pilot hopper reads \"arched\" on 1.5 cells though it flows): use at "
+                         "most " +
+                         format_quantity(0.5 * hopper.outlet_width / kMinimumCellsAcrossHalfOutlet, "mm"));
   try {
-    return cel::make_hopper_scene(hopper, phi_w, scene_material(c), cel_cell_size(c, 0.01), section_of(c));
+    return cel::make_hopper_scene(hopper, phi_w, scene_material(c), cell, section_of(c));
   } catch (const std::invalid_argument& e) {
     throw InputError(c.file, "hopper", e.what());
   }
@@ -169,6 +179,10 @@ class CelHopperAdapter final : public CelSceneAdapter {
 };
 
 }  // namespace
+
+double default_hopper_cell_size(double outlet_width) {
+  return std::min(0.01, 0.5 * outlet_width / kMinimumCellsAcrossHalfOutlet);
+}
 
 std::unique_ptr<SceneAdapter> cel_hopper_adapter(const SimulationRequest& request) {
   return std::make_unique<CelHopperAdapter>(request);

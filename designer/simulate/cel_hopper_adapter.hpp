@@ -10,6 +10,14 @@
 
 namespace feedflow {
 
+// The fewest cells across the half outlet that resolve a hopper's discharge. `feedflow bench`
+// measured the pilot hopper at W = 60 mm (tests/benchmarks/RECORD.md): 1.5 cells (20 mm) read
+// "arched" for a hopper that flows; 3, 6 and 12 cells give rates 19 %, 11 % and 7 % above the
+// Richardson reference. A coarser cell size is refused, not answered.
+inline constexpr double kMinimumCellsAcrossHalfOutlet = 3.0;
+// Without [cel] cell_size: 10 mm, or finer where the outlet needs it.
+double default_hopper_cell_size(double outlet_width);
+
 std::unique_ptr<SceneAdapter> cel_hopper_adapter(const SimulationRequest& request);
 
 }  // namespace feedflow

@@ -117,9 +117,11 @@ class InterruptRestart : public ::testing::Test {
   fs::path dir_;
 };
 
-// The CEL hopper on 20 mm cells: interrupted in the gravity phase and in the discharge.
+// The CEL hopper on 20 mm cells (a 120 mm outlet: 3 cells across its half): interrupted in the
+// gravity phase and in the discharge.
 TEST_F(InterruptRestart, CelHopperAnyPhase) {
-  const std::string scene = "simulate cases/pilot_hopper.toml --solver cel --set cel.cell_size=20mm";
+  const std::string scene =
+      "simulate cases/pilot_hopper.toml --solver cel --set cel.cell_size=20mm --set hopper.outlet_width=120mm";
   EXPECT_GE(interrupted_runs_match(dir_, scene, "0.3s", {0.1, 0.5, 0.85}).any, 1);
 }
 
