@@ -9,6 +9,7 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/simulate/simulation.hpp"
+#include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/atomic_file.hpp"
 #include "reports/results_json.hpp"
@@ -47,6 +48,7 @@ BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std:
                          const std::filesystem::path& folder) {
   BenchRun run;
   run.invocation = bench_invocation(q, p);
+  run.commit = kCommit;
   const auto start = std::chrono::steady_clock::now();
   try {
     std::vector<SetOverride> overrides;
@@ -86,6 +88,7 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
     run.wall_seconds = j.at("wall_seconds").get<double>();
     run.cores = j.at("cores").get<int>();
     run.results = j.at("results");
+    run.commit = j.value("commit", "");
     return run;
   } catch (const std::exception&) {  // damaged: run it again
     return std::nullopt;
@@ -100,6 +103,7 @@ void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
   j["wall_seconds"] = run.wall_seconds;
   j["cores"] = run.cores;
   j["results"] = run.results;
+  j["commit"] = run.commit;
   write_file_atomically(folder / "run.json", j.dump(2) + "\n");
 }
 

@@ -19,6 +19,7 @@ struct BenchRun {
   double wall_seconds = 0.0;       // [s] of the check or the simulation (loading included)
   int cores = 1;                   // threads it ran on
   nlohmann::ordered_json results;  // the record's results, as results.json has them
+  std::string commit;              // the program's commit that made it ("" for runs saved before it was kept)
   bool done() const { return status == "done"; }
 };
 

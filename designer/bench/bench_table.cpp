@@ -79,6 +79,7 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
                                               {*a->value, *b->value, *c->value});
       r.value = e.value;
       r.error_bar = e.error_bar;
+      r.order = e.order;
       if (!e.order) r.only_run = point_id(*c->point);  // no order: the finest run is the value
       r.source = "CEL Richardson (" + millimetres(*a->point->cell_size) + ", " + millimetres(*b->point->cell_size) +
                  ", " + millimetres(*c->point->cell_size) + " mm; " +
@@ -198,6 +199,7 @@ nlohmann::ordered_json bench_json(const std::vector<BenchQuestionTable>& tables)
     else {
       ref["value"] = optional_number(t.reference.value);
       ref["error_bar"] = optional_number(t.reference.error_bar);
+      ref["order"] = optional_number(t.reference.order);
       ref["unit"] = t.reference.unit;
     }
     ref["agreement"] = t.reference.agreement;
@@ -228,6 +230,7 @@ nlohmann::ordered_json bench_json(const std::vector<BenchQuestionTable>& tables)
       ja["pareto_front"] = a.pareto;
       ja["wall_seconds"] = a.run ? nlohmann::ordered_json(a.run->wall_seconds) : nlohmann::ordered_json(nullptr);
       ja["cores"] = a.run ? nlohmann::ordered_json(a.run->cores) : nlohmann::ordered_json(nullptr);
+      if (a.run && !a.run->commit.empty()) ja["commit"] = a.run->commit;
       jq["answers"].push_back(ja);
     }
     out.push_back(jq);

@@ -22,6 +22,7 @@ struct BenchReference {
   std::string source;                // "CEL Richardson (20, 10, 5 mm; observed order 1.31)"; empty: none
   std::optional<double> value;       // numbers
   std::optional<double> error_bar;   // [unit] half-width
+  std::optional<double> order;       // the CEL series' observed order of convergence
   std::string label;                 // labels
   std::string unit;
   std::string agreement;             // what the CEL and DEM references say of each other

@@ -2,11 +2,20 @@
 
 #include <cmath>
 
+#include "designer/bench/measured_bench.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
+
+MeasuredOrder measured_hopper_rate_order() {
+  const MeasuredBench& table = measured_bench();
+  const MeasuredQuestion* q = table.find("hopper_discharge_rate_60mm");
+  if (!q || !q->order)
+    throw NotAvailable("the shipped bench table has no observed order for the hopper's discharge rate; give --order");
+  return {*q->order, "(measured by feedflow bench on the pilot hopper at W = 60 mm, " + table.date + ")"};
+}
 
 void CalibrationDesign::check() const {
   std::size_t fitted = 0;
@@ -80,8 +89,11 @@ BenchQuestion design_point_question(const CalibrationDesign& d, const DesignPoin
     p.resolution = format_number(half_outlet / h, 3) + " cells across the half outlet";
     q.points.push_back(std::move(p));
   }
-  q.two_level_order = d.order.value_or(kMeasuredHopperRateOrder);
-  q.two_level_order_source = d.order ? "(--order)" : kMeasuredHopperRateOrderSource;
+  if (d.cells_across.size() == 2) {
+    const MeasuredOrder measured = d.order ? MeasuredOrder{*d.order, "(--order)"} : measured_hopper_rate_order();
+    q.two_level_order = measured.order;
+    q.two_level_order_source = measured.source;
+  }
   return q;
 }
 

@@ -18,12 +18,15 @@ struct DesignPoint {
   bool held_out;        // left out of the fit, to test it
 };
 
-// The order the hopper's CEL discharge rate converges with, as `feedflow bench` measured it on
-// the pilot hopper (10, 5, 2.5 mm at W = 60 mm, tests/benchmarks/RECORD.md): what two levels
-// extrapolate with unless told otherwise.
-inline constexpr double kMeasuredHopperRateOrder = 0.763;
-inline constexpr const char* kMeasuredHopperRateOrderSource =
-    "(measured by feedflow bench on the pilot hopper, 10/5/2.5 mm at W = 60 mm)";
+// The order the hopper's CEL discharge rate converges with, as `feedflow bench` measured it
+// (the shipped table's pilot hopper question: 10, 5, 2.5 mm at W = 60 mm), and where it was
+// measured: what two levels extrapolate with unless told otherwise. Throws NotAvailable when
+// the shipped table has no observed order for it.
+struct MeasuredOrder {
+  double order;
+  std::string source;
+};
+MeasuredOrder measured_hopper_rate_order();
 
 struct CalibrationDesign {
   std::string case_file;                 // the hopper case whose outlet and semi-angle are varied
@@ -31,7 +34,7 @@ struct CalibrationDesign {
   std::string against = "cel";           // "cel" | "dem"
   std::vector<DesignPoint> points;
   std::vector<double> cells_across = {3.0, 6.0};  // CEL levels: cells across the half outlet, each twice the last
-  std::optional<double> order;           // two-level Richardson order; none: kMeasuredHopperRateOrder
+  std::optional<double> order;           // two-level Richardson order; none: measured_hopper_rate_order()
   std::optional<double> time;            // [s] simulated time; none: the scene's own end
 
   // Throws InputError (naming the flag) for no points, fewer than two fitted points, CEL levels

@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "designer/bench/bench_plan.hpp"
+#include "designer/bench/measured_bench.hpp"
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
 #include "designer/cli/command_options.hpp"
@@ -18,9 +19,11 @@
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
 #include "designer/cli/report_files.hpp"
+#include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
 #include "models/units/quantity_format.hpp"
+#include "models/units/quantity_parser.hpp"
 #include "reports/results_json.hpp"
 
 namespace feedflow {
@@ -30,6 +33,9 @@ struct BenchArguments {
   bool quick = false;
   bool list = false;
   bool report = false;
+  bool tabulate = false;           // make no runs: tabulate the ones in the output folder
+  bool measured = false;           // show the shipped table
+  std::string tolerance = "10%";   // what --measured picks the cheapest setting for
   std::vector<std::string> only;   // question ids
   std::vector<std::string> rungs;  // L0..L3; empty: all
   CommandOptions options;
@@ -120,8 +126,15 @@ BenchRuns make_runs(const BenchArguments& args, const std::vector<BenchQuestion>
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
-    if (say && !saved_bench_run(dir, bench_invocation(*q, *p)))
+    if (say && !args.tabulate && !saved_bench_run(dir, bench_invocation(*q, *p)))
       std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
+    if (args.tabulate) {
+      if (auto saved = saved_bench_run(dir, bench_invocation(*q, *p))) {
+        runs.by_folder[dir] = std::move(*saved);
+        ++runs.read_back;
+      }
+      continue;
+    }
     bool made = false;
     BenchRun run = run_or_read_back(*q, *p, ".", dir, made);
     if (!made) {
@@ -150,8 +163,61 @@ std::string reference_line(const BenchQuestionTable& t) {
   return t.question->id + ": reference " + value + " (" + r.source + ")";
 }
 
+// The shipped table: per question its reference and the cheapest measured setting whose error
+// is within the tolerance.
+int show_measured(const BenchArguments& args) {
+  double tolerance = 0.0;
+  try {
+    tolerance = parse_quantity_as(args.tolerance, dim::dimensionless);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--tolerance", args.tolerance, std::string(e.what()) + "; expected a fraction, e.g. 10%");
+  }
+  if (!(tolerance > 0.0)) throw InputError("--tolerance", args.tolerance, "expected a positive fraction, e.g. 10%");
+  const MeasuredBench& table = measured_bench();
+  nlohmann::ordered_json j;
+  j["measured"] = {{"date", table.date}, {"provenance", table.provenance}};
+  j["tolerance"] = tolerance;
+  j["questions"] = nlohmann::ordered_json::array();
+  const bool say = args.options.human_output();
+  if (say)
+    std::cout << "Bench table shipped with feedflow, measured " << table.date << " (" << table.provenance
+              << ").\nCheapest measured setting within " << format_number(100 * tolerance, 3) << " % of the reference:\n";
+  for (const auto& q : table.questions) {
+    const MeasuredAnswer* best = cheapest_within(q, tolerance);
+    nlohmann::ordered_json jq{{"id", q.id}, {"reference_source", q.reference_source}};
+    std::string reference = "none";
+    if (q.reference) {
+      reference = format_number(*q.reference, 4) + (q.error_bar ? " +- " + format_number(*q.error_bar, 3) : "") + " " + q.unit;
+      jq["reference"] = *q.reference;
+      jq["unit"] = q.unit;
+    } else if (!q.reference_label.empty()) {
+      reference = q.reference_label;
+      jq["reference"] = q.reference_label;
+    }
+    if (best)
+      jq["cheapest"] = {{"rung", best->rung}, {"setting", best->setting}, {"error", *best->error},
+                        {"wall_seconds", *best->wall_seconds}, {"invocation", best->invocation}};
+    j["questions"].push_back(jq);
+    if (!say) continue;
+    std::cout << "  " << q.id << ": reference " << reference;
+    if (!q.reference_source.empty()) std::cout << " (" << q.reference_source << ")";
+    std::cout << "\n    ";
+    if (!q.reference && q.reference_label.empty()) std::cout << "no reference measured: nothing can be chosen\n";
+    else if (!reference_resolves(q, tolerance))
+      std::cout << "the reference's own error bar (" << format_number(100 * *q.error_bar / std::abs(*q.reference), 3)
+                << " %) is wider than the tolerance: nothing can be chosen\n";
+    else if (!best) std::cout << "no measured setting is within the tolerance\n";
+    else
+      std::cout << best->rung << " " << best->setting << ": error " << format_number(100 * *best->error, 3) << " %, "
+                << format_quantity(*best->wall_seconds, "s", 3) << "\n";
+  }
+  write_json_copy(j.dump(2) + "\n", args.options);
+  return kExitOk;
+}
+
 int run_bench(const BenchArguments& args) {
   const auto start = std::chrono::steady_clock::now();
+  if (args.measured) return show_measured(args);
   const std::vector<BenchQuestion> questions = selected_questions(args);
   if (args.list) {
     list_bench(questions);
@@ -175,6 +241,7 @@ int run_bench(const BenchArguments& args) {
   nlohmann::ordered_json json;
   json["feedflow_bench"] = args.quick ? "quick" : "full";
   json["command_line"] = invocation();
+  json["commit"] = kCommit;
   json["runs_made"] = runs.made;
   json["runs_read_back"] = runs.read_back;
   json["wall_seconds"] = wall;
@@ -212,6 +279,13 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   command->add_flag("--quick", args->quick, "coarse points only (minutes); the full bench takes hours");
   command->add_flag("--list", args->list, "list the questions and the runs of each, then stop");
   command->add_flag("--report", args->report, "also write report.pdf and report.html (one chart per question)");
+  command->add_flag("--tabulate", args->tabulate, "make no runs: tabulate the runs already in the output folder");
+  command->add_flag("--measured", args->measured,
+                    "show the bench table shipped with feedflow: each question's reference and the cheapest "
+                    "measured setting within --tolerance");
+  command->add_option("--tolerance", args->tolerance, "error allowed against the reference, for --measured")
+      ->capture_default_str()
+      ->type_name("FRACTION");
   command->add_option("--only", args->only, "question ids to run (default: all; see --list)")
       ->delimiter(',')
       ->type_name("ID[,ID...]");

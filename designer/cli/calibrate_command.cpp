@@ -117,7 +117,7 @@ std::string rung_text(const CalibrationDesign& d) {
     levels += (k == 0 ? "" : k + 1 == d.cells_across.size() ? " and " : ", ") + format_number(d.cells_across[k], 3);
   std::string s = "L2 CEL-FEM, " + levels + " cells across the half outlet";
   if (d.cells_across.size() == 2)
-    s += ", Richardson with order " + format_number(d.order.value_or(kMeasuredHopperRateOrder), 3);
+    s += ", Richardson with order " + format_number(d.order.value_or(measured_hopper_rate_order().order), 3);
   else if (d.cells_across.size() > 2)
     s += ", Richardson with the observed order";
   return s;
@@ -365,7 +365,7 @@ void add_calibrate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->type_name("N[,N...]");
   command->add_option("--order", args->order,
-                      "order two CEL levels extrapolate with (default: the order feedflow bench measured, 0.763)");
+                      "order two CEL levels extrapolate with (default: the order in the shipped bench table)");
   command->add_option("--time", args->time, "simulated time of each run (default: the scene's own)")->type_name("TIME");
   command->add_option("--write", args->write,
                       "material file to write (default: the material's own file; a built-in material: "

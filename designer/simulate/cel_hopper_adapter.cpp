@@ -31,7 +31,8 @@ cel::CelScene hopper_scene(const SimulationRequest& request) {
   const double phi_w = hopper.wall_friction_angle.value_or(c.material.bulk.wall_friction_angle);
   const double cell = cel_cell_size(c, default_hopper_cell_size(hopper.outlet_width));
   const double across = 0.5 * hopper.outlet_width / cell;
-  if (across < kMinimumCellsAcrossHalfOutlet * (1.0 - 1e-9))
+  // 1 % slack: a cell size typed rounded (6.67 mm for 3 cells across 20 mm) is not refused.
+  if (across < kMinimumCellsAcrossHalfOutlet * 0.99)
     throw InputError(c.file, "cel.cell_size",
                      format_quantity(cell, "mm") + " puts " + format_number(across, 2) + " cells across the half outlet (" +
                          format_quantity(0.5 * hopper.outlet_width, "mm") + "); the CEL hopper needs at least " +
