@@ -46,7 +46,7 @@ bool any_header(std::string_view line) {
 std::string calibration_toml(const Calibration& c, const std::vector<CalibrationPointRecord>& points) {
   std::ostringstream o;
   o << "# Written by `feedflow calibrate`: reduced-model coefficients fitted to a full rung. The design\n"
-       "# check uses them for " << c.geometry << " hoppers with hopper.density=" << c.density_model << ".\n";
+       "# check uses them for " << c.geometry << " hoppers with hopper.bulk_density=" << c.density_model << ".\n";
   o << "[calibration]\n";
   o << "against = " << quoted(c.against) << "\n";
   o << "rung = " << quoted(c.rung) << "\n";

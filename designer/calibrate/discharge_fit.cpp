@@ -57,6 +57,8 @@ DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeOb
   for (std::size_t i = 0; i < obs.size(); ++i)
     if (!obs[i].held_out) fitted.push_back(i);
   std::vector<bool> free(f.before.size(), true);
+  std::vector<double> weight;  // each fitted point's relative uncertainty
+  for (std::size_t i : fitted) weight.push_back(std::max(kFloorUncertainty, obs[i].error_bar / obs[i].reference));
   try {
     if (fitted.size() < row.coefficients.size())
       throw std::invalid_argument("fewer fitted points than coefficients");
@@ -74,7 +76,7 @@ DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeOb
         for (std::size_t k = 0; k < fitted.size(); ++k) {
           const auto& o = obs[fitted[k]];
           try {
-            r[k] = *row_rate(row, c, o.hopper, m) / o.reference - 1.0;
+            r[k] = (*row_rate(row, c, o.hopper, m) / o.reference - 1.0) / weight[k];
           } catch (const std::invalid_argument&) {  // outside the row's domain (W <= k d): far off
             r[k] = 1e3;
           }

@@ -1,6 +1,7 @@
 #pragma once
 // Fits each hopper.discharge row's free coefficients (Beverloo's C and k, the factor on a
-// theory's rate) to full-rung discharge rates by least squares on the relative error, through
+// theory's rate) to full-rung discharge rates by least squares on the relative error, each
+// point weighted by its reference's relative uncertainty (at least kFloorUncertainty), through
 // the design check's own evaluation (so the design check reproduces the fit exactly), and
 // measures the rows and the design band before and after, on the fitted and the held-out points.
 // A coefficient the fit takes out of its physical range (Beverloo's k past 3) is held at its
@@ -12,6 +13,12 @@
 #include "designer/design/hopper_estimates.hpp"
 
 namespace feedflow {
+
+// The relative uncertainty a reference is weighted with at least (a CEL level without an error
+// bar, a DEM run with a tight interval): 2 %.
+inline constexpr double kFloorUncertainty = 0.02;
+// A reference less sure than this (error bar over value) does not enter a fit: 50 %.
+inline constexpr double kUsableUncertainty = 0.5;
 
 // One design point: the hopper at its outlet and semi-angle, and the full rung's rate there.
 struct DischargeObservation {

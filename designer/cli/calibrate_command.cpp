@@ -164,7 +164,12 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
       runs[point_id(bp)] = std::move(run);
     }
     outcome.reference = tabulate(outcome.question, runs).reference;
-    if (outcome.status == "done" && !outcome.reference.value) outcome.status = "no reference rate";
+    const BenchReference& r = outcome.reference;
+    if (outcome.status != "done") continue;
+    if (!r.value || !(*r.value > 0.0)) outcome.status = "no reference rate";
+    else if (r.error_bar && *r.error_bar > kUsableUncertainty * *r.value)
+      outcome.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " + format_number(*r.error_bar, 2) +
+                       " kg/s)";
   }
   return true;
 }
@@ -330,6 +335,9 @@ int run_calibrate(const CalibrateArguments& args) {
       if (!row.failure.empty()) std::cout << " (not fitted: " << row.failure << ")";
       std::cout << '\n';
     }
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (points[i].status != "done")
+        std::cout << "  " << points[i].question.title << ": left out, " << points[i].status << '\n';
     std::cout << made << " run(s) made, " << read_back << " read back\nWritten: ";
     for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
     std::cout << '\n';

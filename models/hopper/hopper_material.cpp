@@ -28,7 +28,7 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
     const Calibration& c = *m.calibration;
     if (c.density_model != density.name) {
       hm.calibration_note = "the material's calibrated discharge coefficients are not used: they were fitted with "
-                            "hopper.density=" + c.density_model + ", this check uses " + std::string(density.name);
+                            "hopper.bulk_density=" + c.density_model + ", this check uses " + std::string(density.name);
     } else {
       DischargeCalibration dc;
       dc.geometry = c.geometry == "conical" ? FlowGeometry::conical : FlowGeometry::plane;

@@ -21,7 +21,7 @@ struct Calibration {
   std::string rung;           // what the references were, in words
   std::string scene;          // the case whose geometry the design of experiments varied
   std::string geometry;       // "wedge" | "conical": the hoppers the discharge coefficients apply to
-  std::string density_model;  // the hopper.density row the fit evaluated the reduced models with
+  std::string density_model;  // the hopper.bulk_density row the fit evaluated the reduced models with
   std::string commit, date;   // of the program that made the references
   std::map<std::string, CalibratedModel> discharge;  // by hopper.discharge row name
   std::size_t points = 0;     // design points (fitted and held out)

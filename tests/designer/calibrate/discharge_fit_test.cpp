@@ -94,6 +94,18 @@ TEST(DischargeFit, RecoversAFactorOnJohansonsRate) {
   for (std::size_t i = 0; i < fit.design_after.size(); ++i) EXPECT_NEAR(fit.design_after[i] / fit.design_before[i], 1.7, 1e-6);
 }
 
+// Each point counts by its reference's uncertainty: one reference three times too high but with a
+// 100 % error bar barely moves the factor fitted on eight sure ones (2 % floor): 1.7 to 1e-3.
+TEST(DischargeFit, UncertainReferencesCountLess) {
+  auto obs = observations("johanson", {1.7});
+  obs[0].reference *= 3.0;
+  obs[0].error_bar = obs[0].reference;
+  const DischargeFit fit = fit_discharge(obs, pine());
+  EXPECT_NEAR(row_fit(fit, "johanson").after[0], 1.7, 1e-3);
+  obs[0].error_bar = 0.0;  // the same outlier taken as sure pulls the factor well away
+  EXPECT_GT(std::abs(row_fit(fit_discharge(obs, pine()), "johanson").after[0] - 1.7), 0.03);
+}
+
 // Brown-Richards applies to wedges only: a conical design has no Brown row to fit.
 TEST(DischargeFit, FitsOnlyTheRowsThatApply) {
   std::vector<DischargeObservation> obs;
