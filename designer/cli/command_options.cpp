@@ -1,5 +1,7 @@
 #include "designer/cli/command_options.hpp"
 
+#include "designer/cli/exit_codes.hpp"
+
 namespace feedflow {
 
 void add_verbosity_options(CLI::App& command, CommandOptions& options, bool has_json) {
@@ -27,6 +29,18 @@ void add_case_options(CLI::App& command, CommandOptions& options, const std::str
   command.add_option("--out", options.out, "output folder (default: " + default_folder + ")")
       ->type_name("DIR");
   add_verbosity_options(command, options, true);
+  command.add_option("--fail-on", options.fail_on,
+                     "exit with code 1 when the verdict is this bad or worse: marginal (MARGINAL, UNKNOWN or "
+                     "FAIL) or fail (FAIL); default: exit 0 whatever the verdict")
+      ->check(CLI::IsMember({"marginal", "fail"}))
+      ->type_name("VERDICT");
+}
+
+int verdict_exit_code(const CommandOptions& options, VerdictStatus verdict) {
+  if (options.fail_on.empty()) return kExitOk;
+  const bool fails = verdict == VerdictStatus::fail;
+  const bool marginal = verdict == VerdictStatus::marginal || verdict == VerdictStatus::unknown;
+  return fails || (options.fail_on == "marginal" && marginal) ? kExitVerdict : kExitOk;
 }
 
 }  // namespace feedflow

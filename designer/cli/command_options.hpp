@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "models/core/design_record.hpp"
+
 namespace feedflow {
 
 struct CommandOptions {
@@ -13,6 +15,7 @@ struct CommandOptions {
   std::string out;                // output folder; empty = the command's default
   bool quiet = false;
   bool verbose = false;
+  std::string fail_on;            // "marginal" | "fail": the verdict that makes the exit code 1
 
   bool json_to_stdout() const { return json == "-"; }
   // Where human text goes: stdout, unless the JSON goes there.
@@ -23,7 +26,11 @@ struct CommandOptions {
 void add_verbosity_options(CLI::App& command, CommandOptions& options, bool has_json);
 // --json FILE; `what` names what is written: "the results JSON".
 void add_json_option(CLI::App& command, CommandOptions& options, const std::string& what);
-// All of the above + --set and --out; `default_folder` says where --out defaults to.
+// All of the above + --set, --out and --fail-on; `default_folder` says where --out defaults to.
 void add_case_options(CLI::App& command, CommandOptions& options, const std::string& default_folder);
+
+// The exit code of a finished check: kExitVerdict when --fail-on asks for it and the verdict is
+// that bad or worse (fail > marginal; unknown counts as marginal), else kExitOk.
+int verdict_exit_code(const CommandOptions& options, VerdictStatus verdict);
 
 }  // namespace feedflow

@@ -59,7 +59,7 @@ int run_design(const DesignArguments& args) {
       std::cout << (i ? ", " : "") << written[i].string();
     std::cout << '\n';
   }
-  return 0;
+  return verdict_exit_code(args.options, record.verdict.status);
 }
 
 }  // namespace

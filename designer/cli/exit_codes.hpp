@@ -4,6 +4,7 @@ namespace feedflow {
 
 enum ExitCode : int {
   kExitOk = 0,
+  kExitVerdict = 1,         // --fail-on: the verdict was that bad or worse
   kExitBadInput = 2,        // usage, case file, units, ranges
   kExitNotAvailable = 3,    // a command this build does not have yet
   kExitNumericalFailure = 4,

@@ -110,7 +110,7 @@ int run_simulate(const SimulateArguments& args) {
                                  "the fill's first batch was in); run again\n");
     return kExitInterrupted;
   }
-  return kExitOk;
+  return verdict_exit_code(args.options, record.verdict.status);
 }
 
 }  // namespace
