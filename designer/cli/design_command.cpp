@@ -1,5 +1,6 @@
 // feedflow design <case>: the designer's answer to a case file.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -7,11 +8,17 @@
 
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
+#include "designer/cli/exit_codes.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/report_files.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/design/design_check.hpp"
+#include "designer/verify/rate_verification.hpp"
+#include "models/core/errors.hpp"
+#include "models/os/interrupt_request.hpp"
+#include "models/units/quantity_format.hpp"
+#include "models/units/quantity_parser.hpp"
 #include "reports/results_json.hpp"
 #include "reports/text_summary.hpp"
 
@@ -23,7 +30,78 @@ struct DesignArguments {
   CommandOptions options;
   bool report = false;
   std::vector<std::string> models;  // --model key=name
+  std::string verify = "off";       // off | auto | cel | dem
+  std::string budget = "10 min";
+  std::string tolerance = "10%";
 };
+
+double parsed(const std::string& text, const Dimension& d, const char* flag, const char* example) {
+  try {
+    const double v = parse_quantity_as(text, d, d == dim::dimensionless);
+    if (v > 0.0) return v;
+  } catch (const std::invalid_argument&) {
+  }
+  throw InputError(flag, text, std::string("expected a positive ") + dimension_name(d) + ", e.g. " + example);
+}
+
+// Whether a finding of the verdict on `quantity` was marginal.
+bool marginal_on(const DesignRecord& r, const std::string& quantity) {
+  for (const auto& f : r.verdict.findings)
+    if (f.quantity == quantity && f.status == VerdictStatus::marginal) return true;
+  return false;
+}
+
+// --verify: the hopper's rate on the continuum rung when asked (cel) or when its decision is
+// inside its band (auto); without --verify, a MARGINAL says what would settle it.
+// Returns false when Ctrl-C stopped the runs.
+bool verification(const DesignArguments& args, const Case& c, const std::filesystem::path& runs, DesignRecord& record) {
+  const Hopper* h = std::get_if<Hopper>(&c.equipment);
+  if (args.verify == "dem")
+    throw NotAvailable("--verify dem: the particle rung cannot yet verify a design in place; run `feedflow simulate " +
+                       args.case_file + " --solver dem`");
+  if (!h) {
+    if (args.verify != "off")
+      record.verdict.reasons.push_back("not verified: design --verify covers hopper discharge so far; run `feedflow "
+                                       "simulate " + args.case_file + "` for a " + to_string(c.kind()));
+    return true;
+  }
+  const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
+  const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
+  const bool rate_marginal = marginal_on(record, "mass_flow_rate");
+  if (marginal_on(record, "critical_outlet_width"))
+    record.verdict.reasons.push_back(
+        "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and cannot arch; the "
+        "particle rung with the seed's law (K_nc cohesion) can: feedflow simulate " + args.case_file + " --solver dem");
+  const bool wanted = args.verify == "cel" || (args.verify == "auto" && rate_marginal);
+  if (!wanted) {
+    if (rate_marginal) {
+      const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
+      std::string command = "feedflow design " + args.case_file;
+      for (const auto& set : args.options.sets) command += " --set " + set;
+      command += " --verify auto --tolerance " + args.tolerance + " --budget " +
+                 format_number(std::ceil(plan.estimated_seconds / 60.0 * 1.2), 3) + "min";
+      record.verdict.reasons.push_back(plan.cells_across.empty()
+                                           ? "the discharge rate cannot be verified: " + plan.description
+                                           : "to settle the discharge rate: " + command + " (" + plan.description + ")");
+    }
+    return true;
+  }
+  const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, budget);
+  if (plan.cells_across.empty()) {
+    record.verdict.reasons.push_back("mass flow rate not verified: " + plan.description);
+    return true;
+  }
+  install_interrupt_handler();
+  const RateVerification v = verify_rate(args.case_file, args.options.sets, *h, plan, runs,
+                                         args.options.human_output() ? &std::cout : nullptr);
+  if (v.status == "interrupted") {
+    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are kept in "
+              << runs.string() << ")\n";
+    return false;
+  }
+  apply_rate_verification(c, v, record);
+  return true;
+}
 
 int run_design(const DesignArguments& args) {
   const auto start = std::chrono::steady_clock::now();
@@ -38,6 +116,10 @@ int run_design(const DesignArguments& args) {
     std::cerr << "feedflow: material " << c.material.name << " from " << c.material.origin << '\n';
 
   DesignRecord record = design_check(c, models);
+  const std::filesystem::path verify_runs =
+      (args.options.out.empty() ? std::filesystem::path("out") / (safe_folder_name(c.name) + "_verify")
+                                : std::filesystem::path(args.options.out) / "verify");
+  if (!verification(args, c, verify_runs, record)) return kExitInterrupted;
   record.command_line = invocation();
   record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -74,6 +156,18 @@ void add_design_command(CLI::App& app, int& exit_code) {
   add_case_options(*command, args->options,
                    "out/<case name>; none with --json - unless --report asks for one");
   command->add_flag("--report", args->report, "also write report.pdf and report.html");
+  command->add_option("--verify", args->verify,
+                      "verify on a full rung: auto (the quantities whose decision is inside their band), cel "
+                      "(the hopper's discharge rate on the continuum rung), dem, off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "auto", "cel", "dem"}))
+      ->type_name("RUNG");
+  command->add_option("--budget", args->budget, "wall time a verification may take")
+      ->capture_default_str()
+      ->type_name("TIME");
+  command->add_option("--tolerance", args->tolerance, "error bar a verification must reach")
+      ->capture_default_str()
+      ->type_name("FRACTION");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";

@@ -1,0 +1,68 @@
+// `feedflow design --verify` as a user runs it: a case clear of its limits does not escalate, a
+// MARGINAL throughput names the command that settles it, a budget too small refuses with the
+// plans' costs, and `--verify cel` puts the CEL rate (rung L2) in place of the reduced one, judged
+// again, with the reduced one beside it; a second run reads the CEL runs back.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using namespace feedflow::testing;
+
+namespace {
+
+nlohmann::json design_json(const fs::path& dir, const std::string& flags) {
+  const feedflow::testing::Run r = run_feedflow("design cases/pilot_hopper.toml -q --json - " + flags, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+bool said(const nlohmann::json& j, const std::string& text) {
+  for (const auto& reason : j["verdict"]["reasons"])
+    if (reason.get<std::string>().find(text) != std::string::npos) return true;
+  return false;
+}
+
+// 100 mm without a throughput target: nothing inside a band, auto escalates nothing (no runs).
+// 45 mm with 1.4 kg/s required (the rate's band 0.65-3.1 kg/s): MARGINAL, the command that would
+// settle it is named; with --verify auto and 10 min the 10 % plans (5 and 46 min) do not fit and
+// the verdict says so.
+TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
+  const fs::path dir = scratch_folder("feedflow_verify", true);
+  const auto clear = design_json(dir, "--set hopper.outlet_width=100mm --verify auto");
+  EXPECT_EQ(clear["results"]["mass_flow_rate"]["rung"], "L0");
+  EXPECT_FALSE(fs::exists(dir / "out" / "pilot_hopper_verify"));
+  const std::string marginal = "--set hopper.outlet_width=45mm --set design.required_throughput=1.4kg/s";
+  const auto asked = design_json(dir, marginal);
+  EXPECT_TRUE(said(asked, "to settle the discharge rate: feedflow design cases/pilot_hopper.toml --set "
+                          "hopper.outlet_width=45mm --set design.required_throughput=1.4kg/s --verify auto"));
+  const auto refused = design_json(dir, marginal + " --verify auto --budget 10min");
+  EXPECT_TRUE(said(refused, "mass flow rate not verified: no plan meets 10 % within 10 min"));
+  EXPECT_EQ(refused["results"]["mass_flow_rate"]["rung"], "L0");
+  fs::remove_all(dir);
+}
+
+// A 240 mm outlet verified at 40 %: two CEL levels (40 and 20 mm cells) in seconds; the rate is
+// the CEL estimate with its error bar (rung L2), the reduced rate beside it, and the verdict says
+// verified or contradicted with both numbers. The same command again makes no run.
+TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
+  const fs::path dir = scratch_folder("feedflow_verify", true);
+  const std::string flags = "--set hopper.outlet_width=240mm --verify cel --tolerance 40% --budget 2min";
+  const auto j = design_json(dir, flags);
+  const auto& q = j["results"]["mass_flow_rate"];
+  EXPECT_EQ(q["rung"], "L2");
+  EXPECT_GT(q["value"].get<double>(), 0.0);
+  EXPECT_LT(q["low"].get<double>(), q["value"].get<double>());
+  EXPECT_EQ(j["results"]["mass_flow_rate_reduced_model"]["rung"], "L0");
+  EXPECT_TRUE(said(j, "mass flow rate verified on the continuum rung") ||
+              said(j, "mass flow rate contradicted on the continuum rung"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "pilot_hopper_verify"));
+  const auto again = design_json(dir, flags);
+  EXPECT_EQ(again["results"]["mass_flow_rate"]["value"], q["value"]);
+  EXPECT_TRUE(said(again, "0 s of runs"));
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,54 @@
+// The plan of a discharge-rate verification (designer/verify/rate_verification): read from the
+// shipped bench table (the pilot hopper at 3, 6, 12 cells across the half outlet: 14.5, 123 and
+// 1037 s; error bars 34 % for two levels with the measured order, 8.4 % for three), the cheapest
+// plan that meets the tolerance within the budget, its time scaled by W^-3.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/verify/rate_verification.hpp"
+
+namespace feedflow {
+namespace {
+
+Hopper pilot(double width) {
+  Hopper h = std::get<Hopper>(load_case("cases/pilot_hopper.toml").equipment);
+  h.outlet_width = width;
+  return h;
+}
+
+// At 60 mm: 10 % needs three levels (the measured 14.5 + 123 + 1037 s); 40 % takes two; an hour
+// too little for three leaves no plan, and says what each would take.
+TEST(RateVerification, CheapestPlanThatMeetsTheTolerance) {
+  const RateVerificationPlan three = plan_rate_verification(pilot(0.06), 0.10, 3600);
+  ASSERT_EQ(three.cells_across, (std::vector<double>{3, 6, 12}));
+  EXPECT_NEAR(three.estimated_seconds, 14.5 + 122.6 + 1036.6, 1.0);
+  EXPECT_NEAR(three.expected_error, 0.0844, 1e-3);
+  const RateVerificationPlan two = plan_rate_verification(pilot(0.06), 0.40, 3600);
+  ASSERT_EQ(two.cells_across, (std::vector<double>{3, 6}));
+  EXPECT_NEAR(two.expected_error, 0.344, 2e-3);
+  const RateVerificationPlan none = plan_rate_verification(pilot(0.06), 0.10, 600);
+  EXPECT_TRUE(none.cells_across.empty());
+  EXPECT_NE(none.description.find("no plan meets 10 % within 10 min"), std::string::npos) << none.description;
+}
+
+// At fixed cells across the half outlet the grid scales with the outlet: half the outlet, eight
+// times the time.
+TEST(RateVerification, TimeScalesWithTheOutletCubed) {
+  const double at60 = plan_rate_verification(pilot(0.06), 0.4, 1e9).estimated_seconds;
+  const double at30 = plan_rate_verification(pilot(0.03), 0.4, 1e9).estimated_seconds;
+  EXPECT_NEAR(at30 / at60, 8.0, 1e-9);
+}
+
+// A conical hopper has no continuum plan (the CEL rung is plane strain), and says so.
+TEST(RateVerification, ConicalHopperHasNoContinuumPlan) {
+  Hopper h = pilot(0.06);
+  h.shape = "conical";
+  const RateVerificationPlan p = plan_rate_verification(h, 0.5, 1e9);
+  EXPECT_TRUE(p.cells_across.empty());
+  EXPECT_NE(p.description.find("plane strain"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace feedflow
