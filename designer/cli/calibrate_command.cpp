@@ -9,6 +9,7 @@
 #include <sstream>
 #include <iostream>
 #include <memory>
+#include <set>
 
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
@@ -130,6 +131,15 @@ std::string file_text(const std::filesystem::path& path) {
   return text.str();
 }
 
+// The program's commit that fitted, and those that made the runs where they differ.
+std::string commit_text(const std::set<std::string>& run_commits) {
+  std::string text = kCommit;
+  if (run_commits.size() == 1 && *run_commits.begin() == kCommit) return text;
+  std::string runs;
+  for (const auto& c : run_commits) runs += (runs.empty() ? "" : ", ") + (c.empty() ? std::string("not recorded") : c);
+  return text + " (runs made by " + runs + ")";
+}
+
 std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
 
 struct PointOutcome {
@@ -140,7 +150,7 @@ struct PointOutcome {
 
 // Each point's runs, made or read back; stops at Ctrl-C.
 bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root, std::vector<PointOutcome>& points,
-               std::size_t& made, std::size_t& read_back) {
+               std::size_t& made, std::size_t& read_back, std::set<std::string>& commits) {
   const bool say = args.options.human_output();
   std::size_t total = 0, k = 0;
   for (const auto& p : points) total += p.question.points.size();
@@ -161,6 +171,7 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
         ++read_back;
       }
       if (!run.done()) outcome.status = run.status;
+      commits.insert(run.commit);
       runs[point_id(bp)] = std::move(run);
     }
     outcome.reference = tabulate(outcome.question, runs).reference;
@@ -206,7 +217,8 @@ int run_calibrate(const CalibrateArguments& args) {
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
   std::size_t made = 0, read_back = 0;
-  const bool finished = make_runs(args, out / "runs", points, made, read_back);
+  std::set<std::string> runs_commits;
+  const bool finished = make_runs(args, out / "runs", points, made, read_back, runs_commits);
   if (!finished) {
     std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are kept)\n";
     return kExitInterrupted;
@@ -234,7 +246,7 @@ int run_calibrate(const CalibrateArguments& args) {
   c.scene = cases.front().name;
   c.geometry = std::get<Hopper>(cases.front().equipment).is_wedge() ? "wedge" : "conical";
   c.density_model = std::string(density.name);
-  c.commit = kCommit;
+  c.commit = commit_text(runs_commits);
   c.date = today();
   c.points = observations.size();
   for (const auto& row : fit.rows) {
