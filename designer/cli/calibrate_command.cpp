@@ -136,8 +136,14 @@ std::string commit_text(const std::set<std::string>& run_commits) {
   std::string text = kCommit;
   if (run_commits.size() == 1 && *run_commits.begin() == kCommit) return text;
   std::string runs;
-  for (const auto& c : run_commits) runs += (runs.empty() ? "" : ", ") + (c.empty() ? std::string("not recorded") : c);
-  return text + " (runs made by " + runs + ")";
+  bool unrecorded = false;
+  for (const auto& c : run_commits) {
+    if (c.empty()) unrecorded = true;
+    else runs += (runs.empty() ? "" : ", ") + c;
+  }
+  if (!runs.empty()) text += " (runs made by " + runs + (unrecorded ? " and earlier builds" : "") + ")";
+  else if (unrecorded) text += " (runs made by an earlier build that did not record its commit)";
+  return text;
 }
 
 std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "designer/cli/commands.hpp"
+#include "models/core/commit.hpp"
 #include "models/core/version.hpp"
 
 namespace feedflow {
@@ -9,7 +10,7 @@ namespace feedflow {
 void add_version_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand("version", "print the feedflow version");
   command->callback([&exit_code] {
-    std::cout << "feedflow " << kVersion << " (built with g++ " << __VERSION__ << ", C++"
+    std::cout << "feedflow " << kVersion << " (commit " << kCommit << ", built with g++ " << __VERSION__ << ", C++"
               << __cplusplus / 100 % 100 << ")\n";
     exit_code = 0;
   });
