@@ -45,8 +45,9 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
         if (row->second.figures.count(key))
           figures += std::string(figures.empty() ? "" : ", ") + (key == std::string("fit_rms_error") ? "rms error " : "held-out max error ") +
                      row->second.figures.at(key);
-    out.push_back("Discharge: " + nominal.rate_model + " (the material's [calibration]: coefficients fitted over " +
-                  std::to_string(c.material.calibration->points) + " design points" +
+    out.push_back("Discharge: " + nominal.rate_model + " (the material's [calibration]: coefficients fitted to " +
+                  c.material.calibration->rung + " over " + std::to_string(c.material.calibration->points) +
+                  " design points, commit " + c.material.calibration->commit +
                   (figures.empty() ? "" : "; " + figures) + "; valid within the fitted outlet widths and semi-angles).");
   } else {
     out.push_back("Discharge: " + nominal.rate_model + "; expect +-20-30 % before calibration; Beverloo tends to "

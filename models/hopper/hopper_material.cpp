@@ -32,7 +32,7 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
     } else {
       DischargeCalibration dc;
       dc.geometry = c.geometry == "conical" ? FlowGeometry::conical : FlowGeometry::plane;
-      dc.source = "calibrated against " + c.rung + " (" + c.scene + ", " + c.date + ", " + c.commit + ")";
+      dc.source = "calibrated against " + c.rung.substr(0, c.rung.find(',')) + " (" + c.scene + ", " + c.date + ")";
       for (const auto& [row_name, fitted] : c.discharge) {
         const DischargeModel& row = discharge_models().at(row_name);  // the reader checked the names
         std::vector<double> values;
