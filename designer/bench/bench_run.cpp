@@ -3,10 +3,13 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
 #include "designer/case/case_loader.hpp"
+#include "designer/case/material_text.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/simulate/simulation.hpp"
 #include "models/core/commit.hpp"
@@ -16,6 +19,18 @@
 
 namespace feedflow {
 namespace {
+
+// FNV-1a, 64 bits, as 16 hex digits: a fingerprint stable across builds and machines.
+std::string fnv1a_hex(const std::string& bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
 
 std::string seconds_text(double s) {
   std::ostringstream o;
@@ -44,11 +59,27 @@ std::filesystem::path bench_run_folder(const std::filesystem::path& root, const 
   return root / file_name_friendly(name);
 }
 
+std::string bench_inputs_fingerprint(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root) {
+  try {
+    std::vector<SetOverride> overrides;
+    for (const auto& set : q.sets) overrides.push_back(parse_set_override(set));
+    const std::filesystem::path case_file = source_root / q.case_file;
+    const Case c = load_case(case_file.string(), overrides);
+    std::ifstream in(case_file);
+    std::ostringstream text;
+    text << in.rdbuf() << '\0' << (p.solver ? without_calibration(material_text(c.material)) : material_text(c.material));
+    return fnv1a_hex(text.str());
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
 BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
                          const std::filesystem::path& folder) {
   BenchRun run;
   run.invocation = bench_invocation(q, p);
   run.commit = kCommit;
+  run.inputs = bench_inputs_fingerprint(q, p, source_root);
   const auto start = std::chrono::steady_clock::now();
   try {
     std::vector<SetOverride> overrides;
@@ -76,12 +107,15 @@ BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std:
   return run;
 }
 
-std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation) {
+std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation,
+                                        const std::string& inputs, bool accept_unfingerprinted) {
   std::ifstream in(folder / "run.json");
   if (!in) return std::nullopt;
   try {
     const auto j = nlohmann::ordered_json::parse(in);
     if (j.at("invocation").get<std::string>() != invocation) return std::nullopt;
+    const std::string saved_inputs = j.value("inputs", "");
+    if (saved_inputs.empty() ? !accept_unfingerprinted : saved_inputs != inputs) return std::nullopt;
     BenchRun run;
     run.invocation = invocation;
     run.status = j.at("status").get<std::string>();
@@ -89,6 +123,7 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
     run.cores = j.at("cores").get<int>();
     run.results = j.at("results");
     run.commit = j.value("commit", "");
+    run.inputs = saved_inputs;
     return run;
   } catch (const std::exception&) {  // damaged: run it again
     return std::nullopt;
@@ -104,12 +139,18 @@ void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
   j["cores"] = run.cores;
   j["results"] = run.results;
   j["commit"] = run.commit;
+  j["inputs"] = run.inputs;
   write_file_atomically(folder / "run.json", j.dump(2) + "\n");
+}
+
+std::optional<BenchRun> saved_run_of(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
+                                     const std::filesystem::path& folder) {
+  return saved_bench_run(folder, bench_invocation(q, p), bench_inputs_fingerprint(q, p, source_root), p.solver.has_value());
 }
 
 BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
                           const std::filesystem::path& folder, bool& made) {
-  if (auto saved = saved_bench_run(folder, bench_invocation(q, p))) {
+  if (auto saved = saved_run_of(q, p, source_root, folder)) {
     made = false;
     return std::move(*saved);
   }

@@ -20,6 +20,7 @@ struct BenchRun {
   int cores = 1;                   // threads it ran on
   nlohmann::ordered_json results;  // the record's results, as results.json has them
   std::string commit;              // the program's commit that made it ("" for runs saved before it was kept)
+  std::string inputs;              // bench_inputs_fingerprint when it was made ("" for runs saved before)
   bool done() const { return status == "done"; }
 };
 
@@ -29,17 +30,30 @@ std::string bench_invocation(const BenchQuestion& question, const BenchPoint& po
 std::filesystem::path bench_run_folder(const std::filesystem::path& root, const BenchQuestion& question,
                                        const BenchPoint& point);
 
+// What a point's answer depends on besides its command line, as a fingerprint: the text of the
+// case file and of its material, without the material's [calibration] for a simulation (no
+// solver reads it, so recalibrating does not make hours of runs stale). "" when the case does
+// not load (the run then fails and says why).
+std::string bench_inputs_fingerprint(const BenchQuestion& question, const BenchPoint& point,
+                                     const std::filesystem::path& source_root);
+
 // Runs the point: case files relative to `source_root`; a simulation's files go to `folder`.
 // A run that fails (bad input, a blow-up) or is interrupted comes back with its status, never
 // as a throw.
 BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,
                          const std::filesystem::path& source_root, const std::filesystem::path& folder);
 
-// The run saved in `folder` for this invocation; none when there is none, or it was made for
-// another invocation or is damaged.
-std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation);
+// The run saved in `folder` for this invocation and these inputs; none when there is none, it
+// was made for another invocation or other inputs, or is damaged. A run saved before inputs
+// were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to redo).
+std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation,
+                                        const std::string& inputs, bool accept_unfingerprinted);
 // Writes folder/run.json whole (a temporary renamed over it).
 void save_bench_run(const std::filesystem::path& folder, const BenchRun& run);
+
+// The point's run saved in `folder` when it counts for these inputs (saved_bench_run).
+std::optional<BenchRun> saved_run_of(const BenchQuestion& question, const BenchPoint& point,
+                                     const std::filesystem::path& source_root, const std::filesystem::path& folder);
 
 // The point's run read back from `folder`, or made (and saved, unless interrupted); `made` says
 // which.

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <sstream>
 
+#include "designer/case/material_text.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
@@ -24,21 +25,6 @@ std::string number(double x) {
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, x).ptr;
   return std::string(text, end);
-}
-
-// Whether a line opens a table whose name starts with "calibration" ("[calibration]",
-// "[calibration.discharge.beverloo]", "[[calibration.points]]").
-bool calibration_header(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  if (first == std::string_view::npos || line[first] != '[') return false;
-  std::string_view rest = line.substr(first);
-  while (!rest.empty() && (rest.front() == '[' || rest.front() == ' ')) rest.remove_prefix(1);
-  return rest.substr(0, 11) == "calibration" && (rest.size() == 11 || rest[11] == '.' || rest[11] == ']' || rest[11] == ' ');
-}
-
-bool any_header(std::string_view line) {
-  const auto first = line.find_first_not_of(" \t");
-  return first != std::string_view::npos && line[first] == '[';
 }
 
 }  // namespace
@@ -87,28 +73,8 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
 }
 
 std::string with_calibration(std::string_view text, std::string_view table) {
-  std::string kept;
-  bool inside = false;
-  std::string pending_comments;  // comment lines just above a header belong to that header
-  std::size_t pos = 0;
-  while (pos < text.size()) {
-    const std::size_t end = text.find('\n', pos);
-    const std::string_view line = text.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
-    pos = end == std::string_view::npos ? text.size() : end + 1;
-    const auto first = line.find_first_not_of(" \t");
-    const bool comment = first != std::string_view::npos && line[first] == '#';
-    if (comment) {
-      pending_comments += std::string(line) + "\n";
-      continue;
-    }
-    if (any_header(line)) inside = calibration_header(line);
-    if (!inside) kept += pending_comments + std::string(line) + "\n";
-    pending_comments.clear();
-  }
-  if (!inside) kept += pending_comments;
-  while (kept.size() >= 2 && kept[kept.size() - 1] == '\n' && kept[kept.size() - 2] == '\n') kept.pop_back();
-  if (!kept.empty() && kept.back() != '\n') kept += '\n';
-  return kept + "\n" + std::string(table);
+  const std::string kept = without_calibration(text);
+  return kept + (kept.empty() ? "" : "\n") + std::string(table);
 }
 
 }  // namespace feedflow

@@ -1,8 +1,8 @@
 #include "designer/calibrate/discharge_fit.hpp"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "models/core/errors.hpp"
@@ -46,6 +46,56 @@ Errors errors_of(const std::vector<double>& rates, const std::vector<DischargeOb
   return e;
 }
 
+// Least squares over the free coefficients, holding at its published value any the fit takes
+// out of its physical range and fitting the rest again. Fills f.after, f.standard_errors, f.held.
+void fit_free_coefficients(const DischargeModel& row, const std::vector<DischargeObservation>& obs,
+                           const std::vector<std::size_t>& fitted, HopperMaterial& m, DischargeRowFit& f) {
+  std::vector<double> weight;  // each fitted point's relative uncertainty
+  for (std::size_t i : fitted) weight.push_back(std::max(kFloorUncertainty, obs[i].error_bar / obs[i].reference));
+  std::vector<bool> free(f.before.size(), true);
+  for (;;) {
+    std::vector<std::size_t> index;  // the free coefficients' places in the row
+    std::vector<double> start;
+    for (std::size_t k = 0; k < free.size(); ++k)
+      if (free[k]) {
+        index.push_back(k);
+        start.push_back(f.before[k]);
+      }
+    std::vector<double> c = f.before;
+    const auto residuals = [&](std::span<const double> p, std::span<double> r) {
+      for (std::size_t k = 0; k < index.size(); ++k) c[index[k]] = p[k];
+      for (std::size_t k = 0; k < fitted.size(); ++k) {
+        const auto& o = obs[fitted[k]];
+        try {
+          r[k] = (*row_rate(row, c, o.hopper, m) / o.reference - 1.0) / weight[k];
+        } catch (const std::invalid_argument&) {  // outside the row's domain (W <= k d): far off
+          r[k] = 1e3;
+        }
+      }
+    };
+    const LeastSquaresFit fit = least_squares(residuals, start, fitted.size());
+    f.after = f.before;
+    f.standard_errors.assign(f.before.size(), 0.0);
+    for (std::size_t k = 0; k < index.size(); ++k) {
+      f.after[index[k]] = fit.parameters[k];
+      f.standard_errors[index[k]] = fit.standard_errors[k];
+    }
+    bool refit = false;
+    for (std::size_t k : index) {
+      const DischargeCoefficient& spec = row.coefficients[k];
+      if (f.after[k] >= spec.lowest && f.after[k] <= spec.highest) continue;
+      f.held.push_back(std::string(spec.name) + " held at " + format_number(f.before[k], 3) + ": the fit put it at " +
+                       format_number(f.after[k], 3) + ", outside [" + format_number(spec.lowest, 3) + ", " +
+                       format_number(spec.highest, 3) + "]");
+      free[k] = false;
+      refit = true;
+    }
+    if (!refit) return;
+    if (std::none_of(free.begin(), free.end(), [](bool x) { return x; }))
+      throw NumericalFailure("every coefficient left its physical range");
+  }
+}
+
 DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeObservation>& obs, HopperMaterial m,
                         FlowGeometry g) {
   DischargeRowFit f;
@@ -56,53 +106,10 @@ DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeOb
   std::vector<std::size_t> fitted;
   for (std::size_t i = 0; i < obs.size(); ++i)
     if (!obs[i].held_out) fitted.push_back(i);
-  std::vector<bool> free(f.before.size(), true);
-  std::vector<double> weight;  // each fitted point's relative uncertainty
-  for (std::size_t i : fitted) weight.push_back(std::max(kFloorUncertainty, obs[i].error_bar / obs[i].reference));
   try {
     if (fitted.size() < row.coefficients.size())
       throw std::invalid_argument("fewer fitted points than coefficients");
-    for (;;) {
-      std::vector<std::size_t> index;  // the free coefficients' places in the row
-      std::vector<double> start;
-      for (std::size_t k = 0; k < free.size(); ++k)
-        if (free[k]) {
-          index.push_back(k);
-          start.push_back(f.before[k]);
-        }
-      std::vector<double> c = f.before;
-      const auto residuals = [&](std::span<const double> p, std::span<double> r) {
-        for (std::size_t k = 0; k < index.size(); ++k) c[index[k]] = p[k];
-        for (std::size_t k = 0; k < fitted.size(); ++k) {
-          const auto& o = obs[fitted[k]];
-          try {
-            r[k] = (*row_rate(row, c, o.hopper, m) / o.reference - 1.0) / weight[k];
-          } catch (const std::invalid_argument&) {  // outside the row's domain (W <= k d): far off
-            r[k] = 1e3;
-          }
-        }
-      };
-      const LeastSquaresFit fit = least_squares(residuals, start, fitted.size());
-      f.after = f.before;
-      f.standard_errors.assign(f.before.size(), 0.0);
-      for (std::size_t k = 0; k < index.size(); ++k) {
-        f.after[index[k]] = fit.parameters[k];
-        f.standard_errors[index[k]] = fit.standard_errors[k];
-      }
-      bool refit = false;
-      for (std::size_t k : index) {
-        const DischargeCoefficient& spec = row.coefficients[k];
-        if (f.after[k] >= spec.lowest && f.after[k] <= spec.highest) continue;
-        f.held.push_back(std::string(spec.name) + " held at " + format_number(f.before[k], 3) + ": the fit put it at " +
-                         format_number(f.after[k], 3) + ", outside [" + format_number(spec.lowest, 3) + ", " +
-                         format_number(spec.highest, 3) + "]");
-        free[k] = false;
-        refit = true;
-      }
-      if (!refit) break;
-      if (std::none_of(free.begin(), free.end(), [](bool x) { return x; }))
-        throw NumericalFailure("every coefficient left its physical range");
-    }
+    fit_free_coefficients(row, obs, fitted, m, f);
     for (const auto& o : obs) f.rate_after.push_back(*row_rate(row, f.after, o.hopper, m));
   } catch (const std::exception& e) {
     f.failure = e.what();

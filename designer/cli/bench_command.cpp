@@ -126,10 +126,10 @@ BenchRuns make_runs(const BenchArguments& args, const std::vector<BenchQuestion>
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
-    if (say && !args.tabulate && !saved_bench_run(dir, bench_invocation(*q, *p)))
+    if (say && !args.tabulate && !saved_run_of(*q, *p, ".", dir))
       std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
     if (args.tabulate) {
-      if (auto saved = saved_bench_run(dir, bench_invocation(*q, *p))) {
+      if (auto saved = saved_run_of(*q, *p, ".", dir)) {
         runs.by_folder[dir] = std::move(*saved);
         ++runs.read_back;
       }

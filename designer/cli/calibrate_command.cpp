@@ -5,19 +5,16 @@
 // interrupted calibration reads back what is done.
 #include <chrono>
 #include <ctime>
-#include <fstream>
-#include <sstream>
 #include <iostream>
 #include <memory>
-#include <set>
 
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
 #include "designer/calibrate/calibration_design.hpp"
-#include "designer/calibrate/calibration_toml.hpp"
-#include "designer/calibrate/discharge_fit.hpp"
+#include "designer/calibrate/calibration_report.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_library.hpp"
+#include "designer/case/material_text.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/exit_codes.hpp"
@@ -26,9 +23,7 @@
 #include "designer/cli/output_folder.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
-#include "models/material/builtin_materials.hpp"
 #include "models/os/interrupt_request.hpp"
-#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_list.hpp"
 #include "models/units/quantity_parser.hpp"
@@ -109,254 +104,113 @@ std::string today() {
   return text;
 }
 
-// What the references were, in words: "L2 CEL-FEM, 3 and 6 cells across the half outlet,
-// Richardson with order 0.763".
-std::string rung_text(const CalibrationDesign& d) {
-  if (d.against == "dem") return "L3 DEM at the case's resolution";
-  std::string levels;
-  for (std::size_t k = 0; k < d.cells_across.size(); ++k)
-    levels += (k == 0 ? "" : k + 1 == d.cells_across.size() ? " and " : ", ") + format_number(d.cells_across[k], 3);
-  std::string s = "L2 CEL-FEM, " + levels + " cells across the half outlet";
-  if (d.cells_across.size() == 2)
-    s += ", Richardson with order " + format_number(d.order.value_or(measured_hopper_rate_order().order), 3);
-  else if (d.cells_across.size() > 2)
-    s += ", Richardson with the observed order";
-  return s;
-}
-
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// The program's commit that fitted, and those that made the runs where they differ.
-std::string commit_text(const std::set<std::string>& run_commits) {
-  std::string text = kCommit;
-  if (run_commits.size() == 1 && *run_commits.begin() == kCommit) return text;
-  std::string runs;
-  bool unrecorded = false;
-  for (const auto& c : run_commits) {
-    if (c.empty()) unrecorded = true;
-    else runs += (runs.empty() ? "" : ", ") + c;
-  }
-  if (!runs.empty()) text += " (runs made by " + runs + (unrecorded ? " and earlier builds" : "") + ")";
-  else if (unrecorded) text += " (runs made by an earlier build that did not record its commit)";
-  return text;
-}
-
-std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
-
-struct PointOutcome {
-  BenchQuestion question;
-  BenchReference reference;
-  std::string status = "done";  // or why there is no reference
-};
-
-// Each point's runs, made or read back; stops at Ctrl-C.
-bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root, std::vector<PointOutcome>& points,
-               std::size_t& made, std::size_t& read_back, std::set<std::string>& commits) {
+// Each point's runs, made or read back, and its reference; false when Ctrl-C stopped them.
+bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root, CalibrationOutcome& o) {
   const bool say = args.options.human_output();
   std::size_t total = 0, k = 0;
-  for (const auto& p : points) total += p.question.points.size();
-  for (auto& outcome : points) {
+  for (const auto& p : o.points) total += p.question.points.size();
+  for (auto& point : o.points) {
     std::map<std::string, BenchRun> runs;
-    for (const auto& bp : outcome.question.points) {
+    for (const auto& bp : point.question.points) {
       ++k;
-      const auto folder = bench_run_folder(runs_root, outcome.question, bp);
-      if (say && !saved_bench_run(folder, bench_invocation(outcome.question, bp)))
-        std::cout << "[" << k << "/" << total << "] " << outcome.question.title << ": " << bp.setting << " ..." << std::flush;
+      const auto folder = bench_run_folder(runs_root, point.question, bp);
+      if (say && !saved_run_of(point.question, bp, ".", folder))
+        std::cout << "[" << k << "/" << total << "] " << point.question.title << ": " << bp.setting << " ..." << std::flush;
       bool was_made = false;
-      BenchRun run = run_or_read_back(outcome.question, bp, ".", folder, was_made);
+      BenchRun run = run_or_read_back(point.question, bp, ".", folder, was_made);
       if (was_made) {
-        ++made;
+        ++o.runs_made;
         if (say) std::cout << " " << format_number(run.wall_seconds, 3) << " s" << (run.done() ? "" : " (" + run.status + ")") << '\n';
         if (run.status == "interrupted" || interrupt_requested()) return false;
       } else {
-        ++read_back;
+        ++o.runs_read_back;
       }
-      if (!run.done()) outcome.status = run.status;
-      commits.insert(run.commit);
+      if (!run.done()) point.status = run.status;
+      o.run_commits.insert(run.commit);
       runs[point_id(bp)] = std::move(run);
     }
-    outcome.reference = tabulate(outcome.question, runs).reference;
-    const BenchReference& r = outcome.reference;
-    if (outcome.status != "done") continue;
-    if (!r.value || !(*r.value > 0.0)) outcome.status = "no reference rate";
+    point.reference = tabulate(point.question, runs).reference;
+    const BenchReference& r = point.reference;
+    if (point.status != "done") continue;
+    if (!r.value || !(*r.value > 0.0)) point.status = "no reference rate";
     else if (r.error_bar && *r.error_bar > kUsableUncertainty * *r.value)
-      outcome.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " + format_number(*r.error_bar, 2) +
-                       " kg/s)";
+      point.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " + format_number(*r.error_bar, 2) +
+                     " kg/s)";
   }
   return true;
 }
 
-nlohmann::ordered_json coefficients_json(const DischargeModel& row, const std::vector<double>& c) {
-  nlohmann::ordered_json j = nlohmann::ordered_json::object();
-  for (std::size_t i = 0; i < row.coefficients.size(); ++i) j[std::string(row.coefficients[i].name)] = c[i];
-  return j;
+// Every point's case, loaded before any run (a typo in --case, a width the case refuses).
+std::vector<Case> point_cases(const CalibrationOutcome& o) {
+  std::vector<Case> cases;
+  for (const auto& p : o.points) {
+    std::vector<SetOverride> overrides;
+    for (const auto& s : p.question.sets) overrides.push_back(parse_set_override(s));
+    cases.push_back(load_case(o.design.case_file, overrides));
+    if (!std::holds_alternative<Hopper>(cases.back().equipment))
+      throw InputError("--case", o.design.case_file, "a discharge calibration needs a hopper case");
+  }
+  return cases;
 }
 
 int run_calibrate(const CalibrateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
-  const CalibrationDesign design = design_of(args);
-  const Material material = MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path()).load(args.material);
-  std::vector<PointOutcome> points;
-  for (const auto& p : design.points) points.push_back({design_point_question(design, p), {}, "done"});
+  CalibrationOutcome o;
+  o.design = design_of(args);
+  const Material material =
+      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path()).load(args.material);
+  o.material = material.name;
+  for (const auto& p : o.design.points) o.points.push_back({design_point_question(o.design, p), {}, "done"});
   if (args.list) {
-    for (const auto& p : points)
+    for (const auto& p : o.points)
       for (const auto& bp : p.question.points) std::cout << bench_invocation(p.question, bp) << '\n';
     return kExitOk;
   }
-  // Every point's case must load (a typo in --case, a width the case refuses) before hours of runs.
-  std::vector<Case> cases;
-  for (const auto& p : points) {
-    std::vector<SetOverride> overrides;
-    for (const auto& s : p.question.sets) overrides.push_back(parse_set_override(s));
-    cases.push_back(load_case(design.case_file, overrides));
-    if (!std::holds_alternative<Hopper>(cases.back().equipment))
-      throw InputError("--case", design.case_file, "a discharge calibration needs a hopper case");
-  }
+  const std::vector<Case> cases = point_cases(o);
   const std::filesystem::path out =
       args.options.out.empty() ? std::filesystem::path("out/calibrate") / file_name_friendly(material.name)
                                : std::filesystem::path(args.options.out);
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
-  std::size_t made = 0, read_back = 0;
-  std::set<std::string> runs_commits;
-  const bool finished = make_runs(args, out / "runs", points, made, read_back, runs_commits);
-  if (!finished) {
+  if (!make_runs(args, out / "runs", o)) {
     std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are kept)\n";
     return kExitInterrupted;
   }
-
-  std::vector<DischargeObservation> observations;
-  std::vector<const PointOutcome*> used;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (points[i].status != "done") continue;
-    observations.push_back({std::get<Hopper>(cases[i].equipment), *points[i].reference.value, points[i].reference.error_bar.value_or(0.0),
-                            design.points[i].held_out});
-    used.push_back(&points[i]);
+  for (std::size_t i = 0; i < o.points.size(); ++i) {
+    if (o.points[i].status != "done") continue;
+    o.observations.push_back({std::get<Hopper>(cases[i].equipment), *o.points[i].reference.value,
+                              o.points[i].reference.error_bar.value_or(0.0), o.design.points[i].held_out});
+    o.observed.push_back(i);
   }
-  const std::size_t fitted = std::count_if(observations.begin(), observations.end(),
-                                           [](const DischargeObservation& o) { return !o.held_out; });
+  const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
+                                    [](const DischargeObservation& x) { return !x.held_out; });
   if (fitted < 2)
     throw NumericalFailure("calibration: only " + std::to_string(fitted) +
                            " fitted point(s) have a reference rate; see the runs in " + (out / "runs").string());
+  // The reduced models are evaluated with the material the runs used: the case's.
   const HopperDensityModel& density = hopper_density_models().default_row();
-  const DischargeFit fit = fit_discharge(observations, HopperMaterial::of(material, density));
-
-  Calibration c;
-  c.against = design.against;
-  c.rung = rung_text(design);
-  c.scene = cases.front().name;
-  c.geometry = std::get<Hopper>(cases.front().equipment).is_wedge() ? "wedge" : "conical";
-  c.density_model = std::string(density.name);
-  c.commit = commit_text(runs_commits);
-  c.date = today();
-  c.points = observations.size();
-  for (const auto& row : fit.rows) {
-    if (!row.failure.empty()) continue;
-    CalibratedModel m;
-    for (std::size_t i = 0; i < row.after.size(); ++i) m.coefficients[std::string(row.row->coefficients[i].name)] = row.after[i];
-    m.figures["fit_rms_error_before"] = percent(row.fit_rms_before);
-    m.figures["fit_rms_error"] = percent(row.fit_rms_after);
-    if (fitted < observations.size()) {
-      m.figures["held_out_max_error_before"] = percent(row.held_out_max_before);
-      m.figures["held_out_max_error"] = percent(row.held_out_max_after);
-    }
-    for (std::size_t k = 0; k < row.held.size(); ++k) m.figures["held_" + std::to_string(k + 1)] = row.held[k];
-    c.discharge[std::string(row.row->name)] = std::move(m);
-  }
-  std::vector<CalibrationPointRecord> records;
-  for (std::size_t i = 0; i < observations.size(); ++i)
-    records.push_back({observations[i].hopper.outlet_width, observations[i].hopper.semi_angle, observations[i].reference,
-                       observations[i].error_bar, observations[i].held_out, used[i]->reference.source});
+  o.fit = fit_discharge(o.observations, HopperMaterial::of(cases.front().material, density));
+  const Calibration table =
+      calibration_table(o, cases.front().name, std::get<Hopper>(cases.front().equipment).is_wedge(),
+                        std::string(density.name), commit_text(kCommit, o.run_commits), today());
 
   // The material file: the one it came from, or a copy beside the runs for a built-in material.
   const std::filesystem::path target = !args.write.empty()            ? std::filesystem::path(args.write)
                                        : material.origin != "built-in" ? std::filesystem::path(material.origin)
                                                                        : out / (file_name_friendly(material.name) + ".toml");
-  std::string material_text;
-  if (std::filesystem::exists(material.origin)) material_text = file_text(material.origin);
-  else
-    for (const auto& b : builtin_material_texts())
-      if (b.name == material.name) material_text = std::string(b.toml);
-  const std::string calibrated_text = with_calibration(material_text, calibration_toml(c, records));
-
-  nlohmann::ordered_json j;
-  j["feedflow_calibrate"] = material.name;
+  nlohmann::ordered_json j = calibration_json(o, table);
   j["command_line"] = invocation();
-  j["against"] = c.against;
-  j["rung"] = c.rung;
-  j["commit"] = c.commit;
-  j["date"] = c.date;
-  j["runs_made"] = made;
-  j["runs_read_back"] = read_back;
-  auto& jp = j["points"] = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto& d = design.points[i];
-    nlohmann::ordered_json p{{"outlet_width", {{"value", d.outlet_width}, {"unit", "m"}}},
-                             {"semi_angle", {{"value", d.semi_angle}, {"unit", "rad"}}},
-                             {"held_out", d.held_out},
-                             {"status", points[i].status}};
-    if (points[i].reference.value)
-      p["reference"] = {{"value", *points[i].reference.value},
-                        {"error_bar", points[i].reference.error_bar.value_or(0.0)},
-                        {"unit", "kg/s"},
-                        {"source", points[i].reference.source}};
-    jp.push_back(p);
-  }
-  auto& jr = j["models"] = nlohmann::ordered_json::array();
-  for (const auto& row : fit.rows)
-    jr.push_back({{"model", row.row->name},
-                  {"before", coefficients_json(*row.row, row.before)},
-                  {"after", coefficients_json(*row.row, row.after)},
-                  {"standard_errors", coefficients_json(*row.row, row.standard_errors)},
-                  {"fit_rms_error_before", row.fit_rms_before},
-                  {"fit_rms_error_after", row.fit_rms_after},
-                  {"held_out_max_error_before", row.held_out_max_before},
-                  {"held_out_max_error_after", row.held_out_max_after},
-                  {"rate_before", row.rate_before},
-                  {"rate_after", row.rate_after},
-                  {"held", row.held},
-                  {"failure", row.failure}});
-  j["design_check"] = {{"rate_before", fit.design_before},
-                       {"rate_after", fit.design_after},
-                       {"band_holds_reference_before", fit.band_holds_before},
-                       {"band_holds_reference_after", fit.band_holds_after}};
   j["material_file"] = target.string();
   j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::string json_text = j.dump(2) + "\n";
-  std::vector<OutputFile> files = {{out / "calibration.json", json_text, "--out"}, {target, calibrated_text, "--write"}};
+  std::vector<OutputFile> files = {
+      {out / "calibration.json", json_text, "--out"},
+      {target, with_calibration(material_text(material), calibration_toml(table, calibration_point_records(o))), "--write"}};
   if (!args.options.json.empty() && !args.options.json_to_stdout()) files.push_back({args.options.json, json_text, "--json"});
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr, args.options.verbose, &folder);
-
   if (args.options.human_output()) {
-    std::cout << "Discharge rate, " << material.name << ", against " << c.rung << " (" << observations.size()
-              << " points, " << observations.size() - fitted << " held out):\n";
-    for (std::size_t i = 0; i < observations.size(); ++i)
-      std::cout << "  W = " << format_number(observations[i].hopper.outlet_width * 1e3, 4) << " mm, theta = "
-                << format_number(in_degrees(observations[i].hopper.semi_angle), 4) << " deg"
-                << (observations[i].held_out ? " (held out)" : "") << ": reference "
-                << format_number(observations[i].reference, 4) << " +- " << format_number(observations[i].error_bar, 2)
-                << " kg/s; design check " << format_number(fit.design_before[i], 4) << " -> "
-                << format_number(fit.design_after[i], 4) << " kg/s, band holds it: "
-                << (fit.band_holds_before[i] ? "yes" : "no") << " -> " << (fit.band_holds_after[i] ? "yes" : "no") << '\n';
-    for (const auto& row : fit.rows) {
-      std::cout << "  " << row.row->name << ": " << coefficients_text(*row.row, row.before) << " -> "
-                << coefficients_text(*row.row, row.after) << "; rms error " << percent(row.fit_rms_before) << " -> "
-                << percent(row.fit_rms_after);
-      if (fitted < observations.size())
-        std::cout << ", held-out max " << percent(row.held_out_max_before) << " -> " << percent(row.held_out_max_after);
-      for (const auto& h : row.held) std::cout << " (" << h << ")";
-      if (!row.failure.empty()) std::cout << " (not fitted: " << row.failure << ")";
-      std::cout << '\n';
-    }
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (points[i].status != "done")
-        std::cout << "  " << points[i].question.title << ": left out, " << points[i].status << '\n';
-    std::cout << made << " run(s) made, " << read_back << " read back\nWritten: ";
+    std::cout << calibration_summary(o, table) << o.runs_made << " run(s) made, " << o.runs_read_back
+              << " read back\nWritten: ";
     for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
     std::cout << '\n';
   }

@@ -36,6 +36,22 @@ std::map<double, MeasuredLevel> measured_levels(const MeasuredQuestion& q) {
   return levels;
 }
 
+// The CEL flow pattern in place of the reduced one (kept beside it); what the verdict says of it.
+std::string verify_flow_pattern(const RateVerification& v, Estimates& results) {
+  const auto it = std::find_if(results.begin(), results.end(), [](const auto& r) { return r.first == "flow_pattern"; });
+  if (v.flow_pattern.empty() || it == results.end() || !std::holds_alternative<std::string>(it->second.value)) return {};
+  const Estimate reduced = it->second;
+  const std::string before = std::get<std::string>(reduced.value);
+  Estimate cel;
+  cel.value = v.flow_pattern;
+  cel.model = v.flow_pattern_model;
+  cel.rung = Rung::L2;
+  it->second = cel;
+  results.emplace(it + 1, reduced_model_key("flow_pattern"), reduced);
+  return std::string(before == v.flow_pattern ? "flow pattern verified" : "flow pattern contradicted") +
+         " on the continuum rung: reduced " + before + ", CEL " + v.flow_pattern + " (" + v.flow_pattern_model + ")";
+}
+
 }  // namespace
 
 RateVerificationPlan plan_rate_verification(const Hopper& h, double tolerance, double budget) {
@@ -110,6 +126,11 @@ RateVerification verify_rate(const std::string& case_file, const std::vector<std
   }
   v.reference = tabulate(q, runs).reference;
   if (!v.reference.value) v.status = "the CEL runs gave no rate";
+  const auto& finest = runs.at(point_id(q.points.back())).results;
+  if (finest.contains("flow_pattern") && finest["flow_pattern"]["value"].is_string()) {
+    v.flow_pattern = finest["flow_pattern"]["value"].get<std::string>();
+    v.flow_pattern_model = finest["flow_pattern"].value("model", "");
+  }
   return v;
 }
 
@@ -131,6 +152,7 @@ void apply_rate_verification(const Case& c, const RateVerification& v, DesignRec
   verified.rung = Rung::L2;
   it->second = verified;
   record.results.emplace(it + 1, reduced_model_key("mass_flow_rate"), reduced);
+  const std::string pattern_note = verify_flow_pattern(v, record.results);
   const double value = std::get<double>(reduced.value);
   const bool holds = reduced.low && reduced.high && *reduced.low <= *v.reference.value && *v.reference.value <= *reduced.high;
   const std::string numbers = "reduced " + format_number(value, 4) + " kg/s (band " +
@@ -147,6 +169,7 @@ void apply_rate_verification(const Case& c, const RateVerification& v, DesignRec
   record.verdict.reasons.push_back(std::string(holds ? "mass flow rate verified" : "mass flow rate contradicted") +
                                    " on the continuum rung: " + numbers + " (" + v.reference.source + ", " +
                                    format_number(v.wall_seconds, 3) + " s of runs); the verdict is judged on the CEL rate");
+  if (!pattern_note.empty()) record.verdict.reasons.push_back(pattern_note);
 }
 
 }  // namespace feedflow

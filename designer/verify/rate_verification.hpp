@@ -1,5 +1,6 @@
 #pragma once
-// Verifying a wedge hopper's discharge rate on the continuum rung (L2), for `design --verify`:
+// Verifying a wedge hopper's discharge rate (and, from the same runs, its flow pattern) on the
+// continuum rung (L2), for `design --verify`:
 // CEL runs at fixed numbers of cells across the half outlet, extrapolated by Richardson. The plan
 // is the cheapest that meets the tolerance within the budget, both read from the shipped bench
 // table (the pilot hopper measured at 3, 6 and 12 cells across; wall time scaled by the outlet,
@@ -30,6 +31,8 @@ RateVerificationPlan plan_rate_verification(const Hopper& hopper, double toleran
 
 struct RateVerification {
   BenchReference reference;   // the CEL estimate (value, error bar, source)
+  std::string flow_pattern;   // the finest level's ("mass", "funnel"); empty when it has none
+  std::string flow_pattern_model;
   std::string status = "done";  // or why there is no estimate
   double wall_seconds = 0.0;
 };
@@ -43,6 +46,8 @@ RateVerification verify_rate(const std::string& case_file, const std::vector<std
 // The record with the verified rate: mass_flow_rate becomes the CEL estimate (rung L2),
 // mass_flow_rate_reduced_model keeps the reduced one, the verdict is judged again and a note
 // says "verified" (the reduced band holds the CEL estimate) or "contradicted" with the numbers.
+// The same runs show the flow pattern (wall-to-centre speed ratio of the finest level): it
+// stands beside the reduced one the same way.
 void apply_rate_verification(const Case& c, const RateVerification& v, DesignRecord& record);
 
 }  // namespace feedflow

@@ -58,6 +58,11 @@ TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
   EXPECT_EQ(j["results"]["mass_flow_rate_reduced_model"]["rung"], "L0");
   EXPECT_TRUE(said(j, "mass flow rate verified on the continuum rung") ||
               said(j, "mass flow rate contradicted on the continuum rung"));
+  // The same runs show the flow pattern: the CEL's stands beside the reduced one (mass flow at
+  // 30 deg on both rungs, as the bench measured at 60 mm).
+  EXPECT_EQ(j["results"]["flow_pattern"]["rung"], "L2");
+  EXPECT_EQ(j["results"]["flow_pattern_reduced_model"]["value"], "mass");
+  EXPECT_TRUE(said(j, "flow pattern verified on the continuum rung") || said(j, "flow pattern contradicted"));
   EXPECT_TRUE(fs::exists(dir / "out" / "pilot_hopper_verify"));
   const auto again = design_json(dir, flags);
   EXPECT_EQ(again["results"]["mass_flow_rate"]["value"], q["value"]);

@@ -12,6 +12,7 @@
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
 #include "designer/case/case_loader.hpp"
+#include "designer/case/material_text.hpp"
 
 namespace feedflow {
 namespace {
@@ -164,21 +165,60 @@ TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
   EXPECT_NE(csv.find(",failed: blew up,"), std::string::npos);
 }
 
-// A saved run reads back for the same invocation only; a damaged file is not read.
-TEST(BenchRunFile, ReadsBackForTheSameInvocationOnly) {
+// A saved run reads back for the same invocation and inputs only; a damaged file is not read; a
+// run saved before inputs were fingerprinted counts only where asked (a simulation).
+TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
   const auto dir = std::filesystem::temp_directory_path() / ("feedflow_bench_run_" + std::to_string(::getpid()));
   BenchRun r = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.25);
   r.invocation = "design cases/pilot_hopper.toml";
   r.cores = 2;
+  r.inputs = "0123456789abcdef";
   save_bench_run(dir, r);
-  const auto back = saved_bench_run(dir, r.invocation);
+  const auto back = saved_bench_run(dir, r.invocation, r.inputs, false);
   ASSERT_TRUE(back);
   EXPECT_EQ(back->wall_seconds, 0.25);
   EXPECT_EQ(back->cores, 2);
   EXPECT_EQ(back->results, r.results);
-  EXPECT_FALSE(saved_bench_run(dir, "design cases/other.toml"));
+  EXPECT_FALSE(saved_bench_run(dir, "design cases/other.toml", r.inputs, false));
+  EXPECT_FALSE(saved_bench_run(dir, r.invocation, "fedcba9876543210", true));  // the material changed
+  r.inputs.clear();
+  save_bench_run(dir, r);
+  EXPECT_FALSE(saved_bench_run(dir, r.invocation, "0123456789abcdef", false));
+  EXPECT_TRUE(saved_bench_run(dir, r.invocation, "0123456789abcdef", true));
   std::ofstream(dir / "run.json") << "{ damaged";
-  EXPECT_FALSE(saved_bench_run(dir, r.invocation));
+  EXPECT_FALSE(saved_bench_run(dir, r.invocation, "", true));
+  std::filesystem::remove_all(dir);
+}
+
+// The inputs' fingerprint follows the material: a design point's changes with the material's
+// [calibration], a simulation's does not (no solver reads it), both with the case's values.
+TEST(BenchRunFile, FingerprintFollowsWhatTheAnswerReads) {
+  const auto dir = std::filesystem::temp_directory_path() / ("feedflow_bench_fp_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir / "cases" / "materials");
+  std::filesystem::copy_file(std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" / "pilot_hopper.toml",
+                             dir / "cases" / "pilot_hopper.toml");
+  const auto pine = std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" / "materials" / "loblolly_pine.toml";
+  std::filesystem::copy_file(pine, dir / "cases" / "materials" / "loblolly_pine.toml");
+  BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}, {}, {}};
+  BenchPoint design, cel;
+  cel.solver = Solver::cel;
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir);  // the material is found in ./cases/materials
+  const std::string d0 = bench_inputs_fingerprint(q, design, "."), c0 = bench_inputs_fingerprint(q, cel, ".");
+  const std::string plain =
+      without_calibration(material_text(load_case((dir / "cases" / "pilot_hopper.toml").string()).material));
+  std::ofstream(dir / "cases" / "materials" / "loblolly_pine.toml")
+      << plain << "\n[calibration]\nagainst = \"cel\"\nrung = \"test\"\nscene = \"pilot_hopper\"\ngeometry = \"wedge\"\n"
+         "density_model = \"compressible\"\ncommit = \"none\"\ndate = \"2026-12-02\"\n"
+         "[calibration.discharge.brown]\ncoefficients = { factor = 1.5 }\n";
+  const std::string d1 = bench_inputs_fingerprint(q, design, "."), c1 = bench_inputs_fingerprint(q, cel, ".");
+  std::ofstream(dir / "cases" / "pilot_hopper.toml", std::ios::app) << "\n# a comment changes the case's text\n";
+  const std::string c2 = bench_inputs_fingerprint(q, cel, ".");
+  std::filesystem::current_path(cwd);
+  EXPECT_EQ(d0.size(), 16u);
+  EXPECT_NE(d0, d1);
+  EXPECT_EQ(c0, c1);
+  EXPECT_NE(c1, c2);
   std::filesystem::remove_all(dir);
 }
 
