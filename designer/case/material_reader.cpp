@@ -89,6 +89,7 @@ class MaterialLayer {
       const auto found = given_sources.find(ctx.dotted(key));
       const toml::node* node = table.get(key);
       const bool from_command_line = node && node->source().begin.line == 0;
+      if (overriding) material_.overridden.insert(name + "." + key);
       material_.sources[name + "." + key] =
           found != given_sources.end() ? found->second
           : from_command_line          ? std::string("command line (--set)")

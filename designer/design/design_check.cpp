@@ -2,6 +2,7 @@
 
 #include "designer/design/case_inputs.hpp"
 #include "designer/equipment/equipment_registry.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 
@@ -9,6 +10,10 @@ DesignRecord design_check(const Case& c, const ModelChoices& models) {
   DesignRecord record;
   describe_case(c, record);
   equipment_of(c.kind()).check(c, models, record);
+  if (c.material.bulk.moisture_content)
+    record.assumptions.push_back("Moisture content " + format_quantity(*c.material.bulk.moisture_content, "%", 3) +
+                                 " is informational: no model of this check reads it (its effect on the flow is "
+                                 "in the measured flow properties, which must be taken at this moisture).");
   return record;
 }
 

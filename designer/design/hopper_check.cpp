@@ -60,6 +60,9 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
   if (nominal.drag_factor < 1.0)
     out.push_back("Air drag (Carleton) lowers the rate to " + format_number(nominal.drag_factor * 100, 3) +
                   " % of the drag-free value with d = d50; finer fractions would lower it further.");
+  else if (!a.material.particle_density || !a.material.median_size)
+    out.push_back("No air-drag correction: it needs the particle density (from [hypoplastic]) and the median size "
+                  "(d50 of [psd]), which " + c.material.name + " lacks; fine, light particles discharge slower.");
   for (const auto& [key, source] : c.material.sources)
     if ((key.rfind("flow_properties.", 0) == 0) && source.find("assumed") != std::string::npos) {
       out.push_back("The flow function and effective friction angle of " + c.material.name +

@@ -20,12 +20,16 @@ HopperDensity table(const Material& m, const Compressibility&) {
           "measured compressibility table rho_b(sigma1)"};
 }
 
-// Without hypoplastic parameters: the measured table, else the design density.
+// Without hypoplastic parameters: the measured table, else the design density; the model text
+// says why.
 HopperDensity compressible(const Material& m, const Compressibility& c) {
   if (c)
     return {BulkDensity::compressible(*c),
-            "critical-state density from the Bauer compression law (hypoplastic parameters)"};
-  return m.flow->density.empty() ? constant(m, c) : table(m, c);
+            "critical-state density from the Bauer compression law (hypoplastic parameters), anchored on the " +
+                c->anchor()};
+  HopperDensity d = m.flow->density.empty() ? constant(m, c) : table(m, c);
+  d.model += " (the stress-dependent default needs [hypoplastic] parameters, which " + m.name + " lacks)";
+  return d;
 }
 
 constexpr HopperDensityModel kRows[] = {

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/core/errors.hpp"
+#include "models/units/quantity_format.hpp"
+
 namespace feedflow {
 
 LimitVoidRatios limit_void_ratios(const HypoplasticParameters& hp, double mean_pressure) {
@@ -22,8 +25,33 @@ BulkCompressibility::BulkCompressibility(const HypoplasticParameters& hp, double
 std::optional<BulkCompressibility> BulkCompressibility::of(const Material& m) {
   if (!m.hypoplastic) return std::nullopt;
   const auto& hp = *m.hypoplastic;
-  if (m.bulk.loose_density) return BulkCompressibility(hp, *m.bulk.loose_density, hp.e_i0);
-  return BulkCompressibility(hp, m.bulk.density, hp.e_d0);
+  const bool design_given = m.overridden.count("bulk.density") > 0;
+  const bool loose_given = m.overridden.count("bulk.loose_density") > 0;
+  const auto design_anchor = [&] {
+    BulkCompressibility b(hp, m.bulk.density, hp.e_d0);
+    b.anchor_ = "design density " + format_quantity(m.bulk.density, "kg/m^3") + " at e_d0 = " + format_number(hp.e_d0, 3) +
+                (design_given ? " (given by the case)" : "");
+    return b;
+  };
+  if (!m.bulk.loose_density) return design_anchor();
+  BulkCompressibility loose(hp, *m.bulk.loose_density, hp.e_i0);
+  loose.anchor_ = "loose density " + format_quantity(*m.bulk.loose_density, "kg/m^3") + " at e_i0 = " +
+                  format_number(hp.e_i0, 3);
+  if (design_given && !loose_given) return design_anchor();
+  if (design_given && loose_given) {
+    const BulkCompressibility design = design_anchor();
+    const double gap = std::abs(design.solid_density() / loose.solid_density() - 1.0);
+    if (gap > 0.05)
+      throw InputError(m.sources.count("bulk.density") ? m.sources.at("bulk.density") : m.origin, "material.bulk.density",
+                       "the design density " + format_quantity(m.bulk.density, "kg/m^3") + " (densest, e_d0 = " +
+                           format_number(hp.e_d0, 3) + ") and the loose density " +
+                           format_quantity(*m.bulk.loose_density, "kg/m^3") + " (loosest, e_i0 = " +
+                           format_number(hp.e_i0, 3) + ") imply solid densities " +
+                           format_quantity(design.solid_density(), "kg/m^3") + " and " +
+                           format_quantity(loose.solid_density(), "kg/m^3") +
+                           ", more than 5 % apart: give one of them, or both consistent");
+  }
+  return loose;
 }
 
 double BulkCompressibility::critical_density(double p) const {

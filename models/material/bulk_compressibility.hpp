@@ -3,6 +3,7 @@
 // e_x(p) = e_x0 exp(-(3p/h_s)^n) for the limiting void ratios (x = i, c, d), and the bulk
 // density rho_b = rho_s / (1 + e) they imply (reduced_models.md section 0, models.md 1.2).
 #include <optional>
+#include <string>
 
 #include "models/material/hypoplastic_parameters.hpp"
 #include "models/material/material.hpp"
@@ -26,10 +27,15 @@ class BulkCompressibility {
                       double reference_void_ratio);
 
   // Anchors a material: its loose density at e_i0 (poured, zero pressure) when it has one,
-  // otherwise its design density at e_d0. Empty when the material has no hypoplastic section.
+  // otherwise its design density at e_d0; a design density that a case or --set gave (and not
+  // the loose one) anchors instead, so the user's value changes the answer. Empty when the
+  // material has no hypoplastic section. Throws InputError when a case gives both densities and
+  // they imply solid densities more than 5 % apart.
   static std::optional<BulkCompressibility> of(const Material& m);
 
   double solid_density() const { return solid_density_; }
+  // Which density anchors, in words: "loose density 182 kg/m^3 at e_i0 = 1.38".
+  const std::string& anchor() const { return anchor_; }
   // Bulk density at mean pressure p on the critical-state line (steady flow) [kg/m^3].
   double critical_density(double mean_pressure) const;
   // The loosest and densest bulk densities possible at p [kg/m^3].
@@ -39,6 +45,7 @@ class BulkCompressibility {
  private:
   HypoplasticParameters hp_;
   double solid_density_;
+  std::string anchor_;
 };
 
 }  // namespace feedflow

@@ -4,6 +4,7 @@
 // with its source. Sections a material file leaves out are empty; a model that needs one says so.
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,6 +43,7 @@ struct Material {
   std::optional<DrumFlowProperties> drum_flow;     // [drum_flow]
   std::optional<Calibration> calibration;          // [calibration], written by `feedflow calibrate`
   std::map<std::string, std::string> sources;  // dotted key ("bulk.density") -> source
+  std::set<std::string> overridden;            // dotted keys a case file or --set changed
 };
 
 std::span<const FieldSpec<BulkProperties>> bulk_fields();

@@ -154,6 +154,48 @@ TEST(HopperCheck, CompressibilityTable) {
                InputError);
 }
 
+// A design density the user gives anchors the stress-dependent density (it would otherwise be
+// anchored on the material's loose density and change nothing but the content): 250 and
+// 350 kg/m^3 at e_d0 give lower and higher rates than the material's own anchors, the
+// assumptions say which density anchors, and a loose density given with it that implies another
+// solid density (more than 5 % apart) is refused naming both.
+TEST(HopperCheck, GivenDensityAnchorsTheStressDependentDensity) {
+  const double file = value(check("cases/pilot_hopper.toml"), "mass_flow_rate");
+  const auto light = check("cases/pilot_hopper.toml", {{"material.bulk.density", "250 kg/m^3"}});
+  const auto heavy = check("cases/pilot_hopper.toml", {{"material.bulk.density", "350 kg/m^3"}});
+  EXPECT_LT(value(light, "mass_flow_rate"), 0.9 * file);
+  EXPECT_GT(value(heavy, "mass_flow_rate"), 1.1 * file);
+  bool said = false;
+  for (const auto& a : light.assumptions) said = said || a.find("anchored on the design density 250 kg/m^3") != std::string::npos;
+  EXPECT_TRUE(said);
+  // 290 and 182 kg/m^3 given together imply 435 and 433 kg/m^3 of solid: consistent, accepted.
+  EXPECT_NO_THROW(check("cases/pilot_hopper.toml", {{"material.bulk.density", "290 kg/m^3"},
+                                                    {"material.bulk.loose_density", "182 kg/m^3"}}));
+  try {
+    check("cases/pilot_hopper.toml", {{"material.bulk.density", "150 kg/m^3"}, {"material.bulk.loose_density", "120 kg/m^3"}});
+    FAIL() << "conflicting densities accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "material.bulk.density");
+    EXPECT_NE(std::string(e.what()).find("120 kg/m^3"), std::string::npos) << e.what();
+  }
+}
+
+// Inputs no model reads are said to be informational (moisture), and a model switched because
+// a table is missing says so (no [hypoplastic]: the constant density, no air-drag correction).
+TEST(HopperCheck, SwitchesAndInformationalInputsAreExplained) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  const auto said = [](const DesignRecord& r, const std::string& text) {
+    for (const auto& a : r.assumptions)
+      if (a.find(text) != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(said(design_check(c), "Moisture content 6% is informational"));
+  c.material.hypoplastic.reset();
+  const DesignRecord r = design_check(c);
+  EXPECT_TRUE(said(r, "needs [hypoplastic] parameters, which loblolly_pine lacks"));
+  EXPECT_TRUE(said(r, "No air-drag correction"));
+}
+
 // A material without flow properties cannot be judged, and the error names the missing section.
 TEST(HopperCheck, MaterialWithoutFlowPropertiesIsNamed) {
   Case c = load_case("cases/pilot_hopper.toml");
