@@ -163,10 +163,14 @@ json to_json(const DesignRecord& r) {
     if (!in.si_unit.empty()) units[in.key] = in.si_unit;
   }
   json sources = json::object();
-  for (const auto& in : r.inputs)
+  json display = json::object();  // as a person reads them ("30 deg"), for a report rendered again
+  for (const auto& in : r.inputs) {
     if (!in.source.empty()) sources[in.key] = in.source;
+    if (!in.display.empty()) display[in.key] = in.display;
+  }
   j["inputs"] = std::move(inputs);
   j["input_units"] = std::move(units);
+  j["input_display"] = std::move(display);
   j["input_sources"] = std::move(sources);
   json results = json::object();
   for (const auto& [name, e] : r.results) {
@@ -218,8 +222,11 @@ DesignRecord design_record_from_json(const json& j) {
     for (const auto& f : v.value("findings", json::array())) r.verdict.findings.push_back(finding_from(f));
     r.wall_seconds = field(field(j, "timing", "results"), "wall_s", "timing").get<double>();
     const json sources = j.value("input_sources", json::object());
-    for (auto& in : r.inputs)
+    const json display = j.value("input_display", json::object());
+    for (auto& in : r.inputs) {
       if (sources.contains(in.key)) in.source = sources.at(in.key).get<std::string>();
+      if (display.contains(in.key)) in.display = display.at(in.key).get<std::string>();
+    }
     for (const auto& c : j.value("charts", json::array())) r.charts.push_back(chart_from(c));
     r.assumptions = j.value("assumptions", std::vector<std::string>{});
     if (j.contains("provenance")) r.command_line = j.at("provenance").value("command_line", "");

@@ -42,7 +42,9 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_TRUE(j.at("timing").at("wall_s").is_number());
 }
 
-// Writing and reading back gives the same record, results in the same order.
+// Writing and reading back gives the same record, results in the same order, inputs shown as a
+// person reads them ("30 deg", not "0.5235987755982988 rad": a report rendered again from the
+// JSON shows what the first one showed).
 TEST(ResultsJson, RoundTrips) {
   const DesignRecord a = sample();
   const DesignRecord b = design_record_from_json(nlohmann::ordered_json::parse(to_json(a).dump()));
@@ -58,6 +60,8 @@ TEST(ResultsJson, RoundTrips) {
   ASSERT_EQ(b.inputs.size(), 3u);
   EXPECT_EQ(b.inputs[0].key, "hopper.semi_angle");
   EXPECT_EQ(b.inputs[0].si_unit, "rad");
+  EXPECT_EQ(b.inputs[0].display, "30 deg");
+  EXPECT_EQ(b.inputs[2].display, "290 kg/m^3");
 }
 
 // A malformed results file is refused naming the missing field.
