@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "models/units/quantity_format.hpp"
+#include "reports/margin_table.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -56,6 +57,18 @@ std::string text_summary(const DesignRecord& r) {
     }
   }
   out << "\nVerdict: " << upper(to_string(r.verdict.status)) << '\n';
+  const auto margins = margin_table(r.verdict);
+  if (!margins.empty()) {
+    char line[512];
+    std::snprintf(line, sizeof line, "  %-30s %-14s %-38s %-10s %s\n", "check", "requirement", "achieved (band)",
+                  "margin", "status");
+    out << line;
+    for (const auto& m : margins) {
+      std::snprintf(line, sizeof line, "  %-30s %-14s %-38s %-10s %s%s\n", m.check.c_str(), m.requirement.c_str(),
+                    m.achieved.c_str(), m.margin.c_str(), to_string(m.status), m.governing ? " (governs)" : "");
+      out << line;
+    }
+  }
   for (const auto& reason : r.verdict.reasons) out << "  - " << reason << '\n';
   out << "\nWall time: "
       << format_quantity(r.wall_seconds, r.wall_seconds < 1.0 ? "ms" : "s", 3) << '\n';

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "models/units/quantity_format.hpp"
+#include "reports/margin_table.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -92,6 +93,13 @@ ReportContent design_report_content(const DesignRecord& r, const std::vector<Rep
 
   c.blocks.push_back(ReportHeading{"Verdict"});
   c.blocks.push_back(ReportParagraph{upper(to_string(r.verdict.status)), tone_of(r.verdict.status), true});
+  if (const auto margins = margin_table(r.verdict); !margins.empty()) {
+    ReportTable t{{"Check", "Requirement", "Achieved (band)", "Margin", "Status"}, {}, {0.24, 0.14, 0.34, 0.1, 0.18}};
+    for (const auto& m : margins)
+      t.rows.push_back({m.check, m.requirement, m.achieved, m.margin,
+                        std::string(to_string(m.status)) + (m.governing ? " (governs)" : "")});
+    c.blocks.push_back(std::move(t));
+  }
   c.blocks.push_back(ReportBullets{r.verdict.reasons});
 
   add_results(c, r);
