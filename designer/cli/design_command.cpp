@@ -76,9 +76,10 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
   if (!wanted) {
     if (rate_marginal) {
       const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
-      std::string command = "feedflow design " + args.case_file;
-      for (const auto& set : args.options.sets) command += " --set " + set;
-      command += " --verify auto --tolerance " + args.tolerance + " --budget " +
+      const auto quoted = [](const std::string& a) { return a.find(' ') == std::string::npos ? a : "\"" + a + "\""; };
+      std::string command = "feedflow design " + quoted(args.case_file);
+      for (const auto& set : args.options.sets) command += " --set " + quoted(set);
+      command += " --verify auto --tolerance " + quoted(args.tolerance) + " --budget " +
                  format_number(std::ceil(plan.estimated_seconds / 60.0 * 1.2), 3) + "min";
       record.verdict.reasons.push_back(plan.cells_across.empty()
                                            ? "the discharge rate cannot be verified: " + plan.description
