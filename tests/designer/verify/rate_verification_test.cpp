@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "designer/case/case_loader.hpp"
+#include "designer/design/design_check.hpp"
 #include "designer/verify/rate_verification.hpp"
 
 namespace feedflow {
@@ -48,6 +49,37 @@ TEST(RateVerification, ConicalHopperHasNoContinuumPlan) {
   const RateVerificationPlan p = plan_rate_verification(h, 0.5, 1e9);
   EXPECT_TRUE(p.cells_across.empty());
   EXPECT_NE(p.description.find("plane strain"), std::string::npos);
+}
+
+// The verified rate takes the reduced one's place (rung L2), the reduced one stays beside it, and
+// the verdict says "verified" when the CEL interval overlaps the reduced band (48.65 +- 4.7 kg/s
+// against the band of the 240 mm outlet), "contradicted" with both numbers when it does not
+// (band top + 10 %, +- 1 %).
+TEST(RateVerification, AgreementIsTheOverlapOfBandAndInterval) {
+  const std::vector<SetOverride> sets = {{"hopper.outlet_width", "240 mm"}};
+  const Case c = load_case("cases/pilot_hopper.toml", sets);
+  const DesignRecord design = design_check(c);
+  const Estimate reduced = *find_estimate(design.results, "mass_flow_rate");
+  const auto said = [](const DesignRecord& r, const std::string& text) {
+    for (const auto& x : r.verdict.reasons)
+      if (x.find(text) != std::string::npos) return true;
+    return false;
+  };
+  RateVerification v;
+  v.reference.value = *reduced.high + 0.5 * 4.7;
+  v.reference.error_bar = 4.7;
+  v.reference.source = "test";
+  DesignRecord agreed = design;
+  apply_rate_verification(c, v, agreed);
+  EXPECT_EQ(find_estimate(agreed.results, "mass_flow_rate")->rung, Rung::L2);
+  EXPECT_DOUBLE_EQ(std::get<double>(find_estimate(agreed.results, "mass_flow_rate_reduced_model")->value),
+                   std::get<double>(reduced.value));
+  EXPECT_TRUE(said(agreed, "mass flow rate verified"));
+  v.reference.value = 1.1 * *reduced.high;
+  v.reference.error_bar = 0.01 * *v.reference.value;
+  DesignRecord contradicted = design;
+  apply_rate_verification(c, v, contradicted);
+  EXPECT_TRUE(said(contradicted, "mass flow rate contradicted"));
 }
 
 }  // namespace
