@@ -189,6 +189,7 @@ json to_json(const DesignRecord& r) {
   for (const auto& c : r.charts) j["charts"].push_back(chart_json(c));
   j["assumptions"] = r.assumptions;
   j["provenance"] = {{"command_line", r.command_line}};
+  if (!r.simulation_runs.empty()) j["provenance"]["simulation_runs"] = r.simulation_runs;
   j["timing"] = {{"wall_s", r.wall_seconds}};
   return j;
 }
@@ -229,7 +230,10 @@ DesignRecord design_record_from_json(const json& j) {
     }
     for (const auto& c : j.value("charts", json::array())) r.charts.push_back(chart_from(c));
     r.assumptions = j.value("assumptions", std::vector<std::string>{});
-    if (j.contains("provenance")) r.command_line = j.at("provenance").value("command_line", "");
+    if (j.contains("provenance")) {
+      r.command_line = j.at("provenance").value("command_line", "");
+      r.simulation_runs = j.at("provenance").value("simulation_runs", std::vector<std::string>{});
+    }
   } catch (const json::exception& e) {
     throw std::invalid_argument(std::string("results JSON: ") + e.what());
   }

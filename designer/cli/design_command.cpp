@@ -101,6 +101,7 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
     return false;
   }
   apply_rate_verification(c, v, record);
+  if (v.status == "done") record.simulation_runs.push_back(std::filesystem::absolute(v.finest_run).string());
   return true;
 }
 
@@ -126,11 +127,14 @@ int run_design(const DesignArguments& args) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const auto folder = output_folder(args.options, c.name, "", args.report);
+  if (folder)  // the runs as seen from the results file, so the folder can move with them
+    for (auto& run : record.simulation_runs)
+      run = std::filesystem::absolute(run).lexically_relative(std::filesystem::absolute(*folder)).string();
   const std::string summary = text_summary(record);
   const std::string json = to_json(record).dump(2) + "\n";
   auto files = results_files(folder, json, summary, args.options);
   if (args.report)
-    for (auto& file : report_files(*folder, record)) files.push_back(std::move(file));
+    for (auto& file : report_files(*folder, record, *folder)) files.push_back(std::move(file));
   std::optional<OutputFolder> claimed;
   if (folder) claimed.emplace(*folder, "--out");
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,

@@ -2,8 +2,11 @@
 
 #include <chrono>
 #include <ctime>
+#include <iostream>
+#include <stdexcept>
 
 #include "designer/design/hopper_snapshot.hpp"
+#include "designer/simulate/simulation_pictures.hpp"
 #include "reports/document/report_content.hpp"
 #include "reports/document/report_html.hpp"
 #include "reports/document/report_pdf.hpp"
@@ -22,9 +25,18 @@ std::string utc_now() {
 
 }  // namespace
 
-std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record) {
+std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record,
+                                     const std::filesystem::path& results_folder) {
   std::vector<ReportImage> pictures;
   if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));
+  for (const auto& run : record.simulation_runs) {
+    try {
+      for (auto& p : simulation_pictures(results_folder / run)) pictures.push_back(std::move(p));
+    } catch (const std::runtime_error& e) {
+      std::cerr << "feedflow: warning: the report has no pictures of the run in " << (results_folder / run).string()
+                << ": " << e.what() << '\n';
+    }
+  }
   const ReportContent content = design_report_content(record, pictures, utc_now());
   return {{folder / "report.pdf", render_report_pdf(content).bytes, "--out"},
           {folder / "report.html", report_html(content), "--out"}};

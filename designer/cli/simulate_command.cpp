@@ -1,6 +1,6 @@
-// feedflow simulate <case> [--solver dem|cel] [--time 2s] [--out DIR] [--restart FILE]:
+// feedflow simulate <case> [--solver dem|cel] [--time 2s] [--out DIR] [--restart FILE] [--report]:
 // verifies a case with a full simulation and writes results.json (rung L3 or L2),
-// results.txt, timeseries.csv and the solver's snapshots and checkpoints.
+// results.txt, timeseries.csv, the solver's snapshots and checkpoints, and the report.
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -15,6 +15,7 @@
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
+#include "designer/cli/report_files.hpp"
 #include "designer/design/case_inputs.hpp"
 #include "designer/simulate/simulation.hpp"
 #include "designer/simulate/solver_choice.hpp"
@@ -35,6 +36,7 @@ struct SimulateArguments {
   std::string solver;   // empty: chosen by the seed's rule
   std::string time;     // "2 s"; empty: the scene's own end
   std::string restart;  // checkpoint file
+  bool report = false;
 };
 
 int run_simulate(const SimulateArguments& args) {
@@ -85,6 +87,7 @@ int run_simulate(const SimulateArguments& args) {
   describe_case(c, record);
   record.assumptions.insert(record.assumptions.begin(), choice.reason);
   record.command_line = invocation();
+  record.simulation_runs = {"."};  // the snapshots are beside the results
   record.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -92,6 +95,8 @@ int run_simulate(const SimulateArguments& args) {
   const std::string json = to_json(record).dump(2) + "\n";
   auto files = results_files(request.out, json, summary, args.options);
   if (!outcome.series.empty()) files.push_back({request.out / "timeseries.csv", to_csv(outcome.series), "--out"});
+  if (args.report)
+    for (auto& file : report_files(request.out, record, request.out)) files.push_back(std::move(file));
   auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr, args.options.verbose,
                                &folder);
   for (auto& f : outcome.files) written.push_back(std::move(f));
@@ -133,6 +138,8 @@ void add_simulate_command(CLI::App& app, int& exit_code) {
   command->add_option("--restart", args->restart, "continue the run saved in this checkpoint")
       ->type_name("FILE");
   add_case_options(*command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
+  command->add_flag("--report", args->report,
+                    "also write report.pdf and report.html, with pictures of the simulation");
   command->callback([args, &exit_code] { exit_code = run_simulate(*args); });
 }
 

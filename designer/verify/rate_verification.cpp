@@ -124,6 +124,7 @@ RateVerification verify_rate(const std::string& case_file, const std::vector<std
     runs[point_id(p)] = std::move(run);
     if (v.status != "done") return v;
   }
+  v.finest_run = bench_run_folder(runs_folder, q, q.points.back());
   v.reference = tabulate(q, runs).reference;
   if (!v.reference.value) v.status = "the CEL runs gave no rate";
   const auto& finest = runs.at(point_id(q.points.back())).results;

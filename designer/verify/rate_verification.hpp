@@ -35,6 +35,7 @@ struct RateVerification {
   std::string flow_pattern_model;
   std::string status = "done";  // or why there is no estimate
   double wall_seconds = 0.0;
+  std::filesystem::path finest_run;  // the folder of the finest level's run (its snapshots)
 };
 
 // Runs the plan's levels on the case (`sets`: the user's --set overrides, as typed) below

@@ -1,12 +1,61 @@
 #include "fullsim/cel/cel_field_snapshots.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <utility>
 #include <sstream>
 
 #include "fullsim/common/hdf5_file.hpp"
+#include "fullsim/common/scene_outline.hpp"
 #include "models/os/atomic_file.hpp"
 
 namespace feedflow::cel {
+namespace {
+
+// The part of segment a-b inside the grid's box (Liang-Barsky); false when none of it is.
+bool clip_to_grid(const PlaneStrainGrid& g, Eigen::Vector2d& a, Eigen::Vector2d& b) {
+  const Eigen::Vector2d lo = g.origin, hi = g.origin + g.cell_size * Eigen::Vector2d(g.nx, g.ny);
+  const Eigen::Vector2d d = b - a;
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 2; ++k) {
+    for (const auto& [p, q] : {std::pair{-d[k], a[k] - lo[k]}, std::pair{d[k], hi[k] - a[k]}}) {
+      if (p == 0.0) {
+        if (q < 0.0) return false;
+      } else if (p < 0.0) {
+        t0 = std::max(t0, q / p);
+      } else {
+        t1 = std::min(t1, q / p);
+      }
+    }
+  }
+  if (t0 >= t1) return false;
+  const Eigen::Vector2d a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+// The rigid walls present now, as segments inside the grid (end rays cut at its edge).
+SceneOutline wall_outline(const CelSolver& solver) {
+  const PlaneStrainGrid& g = solver.grid();
+  const double reach = 2.0 * g.cell_size * (g.nx + g.ny);
+  SceneOutline out;
+  for (const RigidWall& wall : solver.options().rigid_walls) {
+    if (!wall.present(solver.time())) continue;
+    const PlacedWall placed(wall, solver.time());
+    const auto& pts = placed.points();
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+      Eigen::Vector2d a = pts[k], b = pts[k + 1];
+      const Eigen::Vector2d d = (b - a).normalized();
+      if (!wall.closed && k == 0) a -= reach * d;
+      if (!wall.closed && k + 2 == pts.size()) b += reach * d;
+      if (clip_to_grid(g, a, b)) out.push_back({{a.x(), a.y(), 0.0}, {b.x(), b.y(), 0.0}});
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 CelFieldSnapshots::CelFieldSnapshots(std::filesystem::path hdf5_file, bool append)
     : file_(std::move(hdf5_file)) {
@@ -47,6 +96,14 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   const std::string group = name;
   // The file is made with the first snapshot: a run that ends before it leaves neither file.
   Hdf5File f(file_, exists_ ? Hdf5File::Mode::append : Hdf5File::Mode::create);
+  if (!exists_) {
+    f.set_attribute("/", "format", std::string("feedflow CEL field snapshots"));
+    f.set_attribute("/", "origin_x", g.origin.x());
+    f.set_attribute("/", "origin_y", g.origin.y());
+    f.set_attribute("/", "cell_size", g.cell_size);
+    f.set_attribute("/", "nx", std::int64_t{g.nx});
+    f.set_attribute("/", "ny", std::int64_t{g.ny});
+  }
   exists_ = true;
   if (f.exists(group)) return;  // a restart that lands on a written step
   f.create_group(group);
@@ -58,6 +115,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   f.write(group + "/pressure", pressure, dims, "Pa");
   f.write(group + "/void_ratio", e, dims, "1");
   f.write(group + "/velocity", velocity, {n, 3}, "m/s");
+  write_outline(f, group + "/outline", wall_outline(solver));
   f.close();
   groups_.push_back(group);
   times_.push_back(solver.time());
@@ -92,6 +150,31 @@ void CelFieldSnapshots::write_sidecar(const PlaneStrainGrid& g) const {
   }
   s << "  </Grid>\n </Domain>\n</Xdmf>\n";
   write_file_atomically(sidecar(), s.str());
+}
+
+CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file, const std::string& group) {
+  const Hdf5File f(hdf5_file, Hdf5File::Mode::read);
+  CelFieldSnapshot s;
+  try {
+    s.cell_size = f.double_attribute("/", "cell_size");
+  } catch (const std::runtime_error&) {
+    throw std::runtime_error(hdf5_file.string() + " holds no grid geometry (written by a feedflow before "
+                             "snapshot files kept it)");
+  }
+  s.origin_x = f.double_attribute("/", "origin_x");
+  s.origin_y = f.double_attribute("/", "origin_y");
+  s.nx = static_cast<int>(f.integer_attribute("/", "nx"));
+  s.ny = static_cast<int>(f.integer_attribute("/", "ny"));
+  s.time = f.double_attribute(group, "time");
+  s.step = static_cast<long>(f.integer_attribute(group, "step"));
+  const std::vector<std::size_t> dims = {static_cast<std::size_t>(s.ny), static_cast<std::size_t>(s.nx)};
+  s.density = f.read<double>(group + "/density", dims);
+  s.volume_fraction = f.read<double>(group + "/volume_fraction", dims);
+  s.pressure = f.read<double>(group + "/pressure", dims);
+  s.void_ratio = f.read<double>(group + "/void_ratio", dims);
+  s.velocity = f.read<double>(group + "/velocity", {dims[0] * dims[1], 3});
+  s.outline = read_outline(f, group + "/outline");
+  return s;
 }
 
 }  // namespace feedflow::cel

@@ -48,6 +48,8 @@ class PlacedWall {
   // Velocity of the wall's material point at x [m/s].
   NodeVector velocity_at(const Eigen::Vector2d& x) const;
   const RigidWall& wall() const { return *wall_; }
+  // The placed points (a closed wall repeats its first point at the end).
+  const std::vector<Eigen::Vector2d>& points() const { return points_; }
 
  private:
   const RigidWall* wall_;

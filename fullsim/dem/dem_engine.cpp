@@ -477,7 +477,8 @@ class ParticleSnapshotWriter final : public SnapshotWriter {
   ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file)
       : engine_(engine), snapshots_(std::move(file), 1) {}
   void write() override {
-    if (engine_.step() != last_step_) snapshots_.write(engine_.particles(), engine_.time(), engine_.step());
+    if (engine_.step() != last_step_)
+      snapshots_.write(engine_.particles(), engine_.time(), engine_.step(), &engine_.outline());
     last_step_ = engine_.step();
   }
   std::size_t count() const override { return snapshots_.count(); }
@@ -505,8 +506,10 @@ void DemEngine::write_checkpoint(Hdf5File& file) const { write_dem_checkpoint(fi
 
 void DemEngine::restore(const Hdf5File& file) {
   std::vector<MeshWall> meshes = std::move(meshes_);
+  SceneOutline outline = std::move(outline_);
   *this = DemEngine(settings_, read_dem_checkpoint(file));
   meshes_ = std::move(meshes);
+  outline_ = std::move(outline);
 }
 
 double DemEngine::max_speed() const {

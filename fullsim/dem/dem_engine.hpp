@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "fullsim/common/run_report.hpp"
+#include "fullsim/common/scene_outline.hpp"
 #include "fullsim/common/stepper.hpp"
 #include "fullsim/dem/blow_up_guard.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
@@ -122,6 +123,10 @@ class DemEngine final : public Stepper {
   const NeighbourList& neighbours() const { return neighbours_; }
   const std::vector<Wall>& walls() const { return walls_; }
   const std::vector<MeshWall>& mesh_walls() const { return meshes_; }
+  // The scene's walls as segments for pictures (written with the first particle snapshot); not
+  // part of a checkpoint: the scene sets it again, and restore() keeps it.
+  void set_outline(SceneOutline outline) { outline_ = std::move(outline); }
+  const SceneOutline& outline() const { return outline_; }
   const OutletSink* outlet_sink() const { return sink_ ? &*sink_ : nullptr; }
   const SimulationBox& box() const { return box_; }
   const RunReport& report() const { return report_; }
@@ -157,6 +162,7 @@ class DemEngine final : public Stepper {
   ParticleStore particles_;
   std::vector<Wall> walls_;
   std::vector<MeshWall> meshes_;
+  SceneOutline outline_;
   std::optional<OutletSink> sink_;
   ContactLawChoice effective_law_;
   std::vector<std::string> skipped_;

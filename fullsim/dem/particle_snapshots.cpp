@@ -28,7 +28,8 @@ std::string ParticleSnapshots::group_name(long step) {
   return buf;
 }
 
-std::string ParticleSnapshots::write(const ParticleStore& p, double time, long step) {
+std::string ParticleSnapshots::write(const ParticleStore& p, double time, long step,
+                                     const SceneOutline* outline) {
   const std::string g = group_name(step);
   const std::size_t n = p.size();
   {
@@ -38,6 +39,7 @@ std::string ParticleSnapshots::write(const ParticleStore& p, double time, long s
       f.create_group("/snapshots");
       f.set_attribute("/", "format", std::string("feedflow DEM particle snapshots"));
       f.set_attribute("/", "format_version", std::int64_t{1});
+      if (outline) write_outline(f, "/outline", *outline);
     }
     f.create_group(g);
     f.set_attribute(g, "time", time);

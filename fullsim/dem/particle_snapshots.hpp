@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fullsim/common/scene_outline.hpp"
 #include "fullsim/common/xdmf_point_series.hpp"
 #include "fullsim/dem/particle_store.hpp"
 
@@ -23,8 +24,10 @@ class ParticleSnapshots {
   // the interval of write_if_due().
   ParticleSnapshots(std::filesystem::path hdf5_file, long every_steps);
 
-  // Writes a snapshot now; returns its group.
-  std::string write(const ParticleStore& particles, double time, long step);
+  // Writes a snapshot now; returns its group. The first one also writes the scene's outline
+  // (scene_outline.hpp), when given.
+  std::string write(const ParticleStore& particles, double time, long step,
+                    const SceneOutline* outline = nullptr);
   // Writes one when `step` is a multiple of the interval (and not already written).
   bool write_if_due(const ParticleStore& particles, double time, long step);
 

@@ -71,6 +71,9 @@ struct DesignRecord {
   std::vector<Chart> charts;          // curves for the report
   std::vector<std::string> assumptions;  // what the models assume, and which way each errs
   std::string command_line;           // how the record was produced
+  // Folders of the simulations behind the results (their snapshot files give the report its
+  // pictures), relative to the folder of the results file.
+  std::vector<std::string> simulation_runs = {};
   double wall_seconds = 0.0;
 };
 

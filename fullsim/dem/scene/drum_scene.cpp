@@ -42,6 +42,7 @@ DrumScene::DrumScene(DemSettings settings, DrumSceneSpec spec)
     throw std::invalid_argument("drum scene: the periodic slab must be at least two particle diameters deep");
   engine_ = std::make_unique<DemEngine>(settings_, drum_box(spec_, r), ParticleStore{});
   engine_->add_wall(Wall::cylinder("shell", Vec3::Zero(), Vec3::UnitY(), R, true));
+  engine_->set_outline(shell_outline());
   if (!spec_.slab_depth) {
     engine_->add_wall(Wall::plane("end wall y-", Vec3::Zero(), Vec3::UnitY()));
     engine_->add_wall(Wall::plane("end wall y+", Vec3(0, spec_.length, 0), -Vec3::UnitY()));
@@ -87,10 +88,15 @@ double DrumScene::fill_line() const {
   return -0.5 * spec_.diameter * std::cos(seg.half_angle);
 }
 
+SceneOutline DrumScene::shell_outline() const {
+  return circle_outline(Vec3(0.0, 0.5 * slab_depth(), 0.0), Vec3::UnitY(), 0.5 * spec_.diameter);
+}
+
 double DrumScene::slab_depth() const { return spec_.slab_depth ? *spec_.slab_depth : spec_.length; }
 
 void DrumScene::rebuild(DemCheckpoint checkpoint) {
   engine_ = std::make_unique<DemEngine>(settings_, std::move(checkpoint));
+  engine_->set_outline(shell_outline());
   std::ostringstream quiet;
   engine_->prepare(quiet);
 }

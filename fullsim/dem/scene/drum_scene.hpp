@@ -82,6 +82,7 @@ class DrumScene {
   const FillReport& fill_report() const { return fill_report_; }
 
  private:
+  SceneOutline shell_outline() const;  // the shell in the mid-plane, for pictures
   void rebuild(DemCheckpoint checkpoint);
 
   DemSettings settings_;

@@ -69,8 +69,19 @@ MeshWall WedgeHopperSlab::wedge_mesh() const {
   return MeshWall("wedge", std::move(mesh));
 }
 
+SceneOutline WedgeHopperSlab::outline() const {
+  const double a = 0.5 * outlet_width, b = 0.5 * bin_width, zb = bin_bottom(), y = 0.5 * depth;
+  SceneOutline o;
+  for (double side : {-1.0, 1.0}) {
+    o.push_back({Vec3(side * a, y, 0.0), Vec3(side * b, y, zb)});
+    o.push_back({Vec3(side * b, y, zb), Vec3(side * b, y, wall_top())});
+  }
+  return o;
+}
+
 void WedgeHopperSlab::add_walls(DemEngine& engine) const {
   const double b = 0.5 * bin_width;
+  engine.set_outline(outline());
   engine.add_mesh_wall(wedge_mesh());
   engine.add_wall(Wall::plane("bin left", Vec3(-b, 0, 0), Vec3::UnitX()));
   engine.add_wall(Wall::plane("bin right", Vec3(b, 0, 0), -Vec3::UnitX()));

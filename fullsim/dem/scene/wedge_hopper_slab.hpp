@@ -40,6 +40,8 @@ struct WedgeHopperSlab {
   SimulationBox box() const;
   // The walls (named "wedge", "bin left/right", "front", "back", "gate") and the sink.
   void add_walls(DemEngine& engine) const;
+  // The inclined and bin walls in the slab's mid-plane, for pictures (the gate left out).
+  SceneOutline outline() const;
   // The inclined walls alone (a restored run gets its analytic walls and sink from the
   // checkpoint, which does not hold meshes).
   MeshWall wedge_mesh() const;

@@ -225,6 +225,44 @@ TEST(CelFieldSnapshots, WritesFieldsAndSidecar) {
   std::filesystem::remove(resumed.sidecar());
 }
 
+// What a picture needs from the file alone: the grid read back as the solver has it, and the
+// walls present at each snapshot as segments inside the grid that lie on a wall of the scene
+// (signed distance 0); the gate over the outlet is drawn before the opening and gone after it.
+TEST(CelFieldSnapshots, KeepTheGridAndTheWallsPresent) {
+  CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.02), pine());
+  const auto file = std::filesystem::temp_directory_path() / "feedflow_cel_outline_test.h5";
+  std::filesystem::remove(file);
+  CelFieldSnapshots snaps(file, false);
+  snaps.write(run.solver());
+  while (run.phase() == ScenePhase::gravity) run.step();
+  run.step();
+  snaps.write(run.solver());
+  Hdf5File f(file, Hdf5File::Mode::read);
+  const auto groups = f.members("/snapshots");
+  ASSERT_EQ(groups.size(), 2u);
+  const CelFieldSnapshot before = read_cel_field_snapshot(file, "/snapshots/" + groups[0]);
+  const CelFieldSnapshot after = read_cel_field_snapshot(file, "/snapshots/" + groups[1]);
+  const auto& g = run.solver().grid();
+  EXPECT_EQ(before.nx, g.nx);
+  EXPECT_EQ(before.ny, g.ny);
+  EXPECT_EQ(before.cell_size, g.cell_size);
+  EXPECT_EQ(before.origin_x, g.origin.x());
+  ASSERT_FALSE(after.outline.empty());
+  EXPECT_LT(after.outline.size(), before.outline.size()) << "the gate is gone after the opening";
+  const double tol = 1e-9, w = g.cell_size * g.nx, h = g.cell_size * g.ny;
+  for (const auto& s : before.outline)
+    for (const auto& p : {s.a, s.b}) {
+      EXPECT_TRUE(p.x() >= g.origin.x() - tol && p.x() <= g.origin.x() + w + tol && p.y() >= g.origin.y() - tol &&
+                  p.y() <= g.origin.y() + h + tol);
+      double nearest = 1e9;
+      for (const auto& wall : run.solver().options().rigid_walls)
+        nearest = std::min(nearest, std::abs(PlacedWall(wall, 0.0).signed_distance({p.x(), p.y()})));
+      EXPECT_LT(nearest, 1e-9) << "segment end (" << p.x() << ", " << p.y() << ") is on no wall";
+    }
+  std::filesystem::remove(file);
+  std::filesystem::remove(snaps.sidecar());
+}
+
 // A checkpoint of another grid is refused with a message naming the file.
 TEST(CelCheckpoint, RefusesAnotherGrid) {
   CelSceneRun run(make_hopper_scene(small_hopper(0.06), 8.5 * kDegree, kPine, 0.02), pine());
