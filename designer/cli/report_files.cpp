@@ -29,11 +29,13 @@ std::vector<OutputFile> report_files(const std::filesystem::path& folder, const 
                                      const std::filesystem::path& results_folder) {
   std::vector<ReportImage> pictures;
   if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));
-  for (const auto& run : record.simulation_runs) {
+  for (const auto& name : record.simulation_runs) {
+    // Lexically: the results folder may not exist yet (a report written with its results).
+    const std::filesystem::path run = (results_folder / name).lexically_normal();
     try {
-      for (auto& p : simulation_pictures(results_folder / run)) pictures.push_back(std::move(p));
+      for (auto& p : simulation_pictures(run)) pictures.push_back(std::move(p));
     } catch (const std::runtime_error& e) {
-      std::cerr << "feedflow: warning: the report has no pictures of the run in " << (results_folder / run).string()
+      std::cerr << "feedflow: warning: the report has no pictures of the run in " << run.string()
                 << ": " << e.what() << '\n';
     }
   }

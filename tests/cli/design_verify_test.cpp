@@ -67,6 +67,21 @@ TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
   const auto again = design_json(dir, flags);
   EXPECT_EQ(again["results"]["mass_flow_rate"]["value"], q["value"]);
   EXPECT_TRUE(said(again, "0 s of runs"));
+  // With --report the verifying run is in the report: its pictures (the finest level's speed at
+  // three times, density and stress) beside the reduced stress map, found through the results'
+  // provenance, relative to the results file.
+  const auto reported = run_feedflow("design cases/pilot_hopper.toml -q --report " + flags, dir);
+  ASSERT_EQ(reported.exit_code, 0) << reported.err;
+  const auto saved = nlohmann::json::parse(slurp(dir / "out/pilot_hopper/results.json"));
+  ASSERT_EQ(saved["provenance"]["simulation_runs"].size(), 1u);
+  EXPECT_TRUE(saved["provenance"]["simulation_runs"][0].get<std::string>().starts_with("../pilot_hopper_verify/"));
+  FILE* pipe = popen(("pdftotext '" + (dir / "out/pilot_hopper/report.pdf").string() + "' -").c_str(), "r");
+  std::string text;
+  char buf[4096];
+  while (pipe && fgets(buf, sizeof buf, pipe)) text += buf;
+  if (pipe) pclose(pipe);
+  EXPECT_NE(text.find("CEL material speed at t ="), std::string::npos) << text;
+  EXPECT_NE(text.find("CEL mean stress"), std::string::npos);
   fs::remove_all(dir);
 }
 
