@@ -8,6 +8,7 @@
 #include "models/hopper/bin_stresses.hpp"
 #include "models/hopper/hopper_slice_stresses.hpp"
 #include "models/units/angle.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -73,6 +74,53 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
   c.series.push_back({"design outlet", SeriesStyle::marker, {h.semi_angle / kDegree}, {h.outlet_width * 1e3}, {}, 6});
   c.note = "Each model's band spans the material's uncertainty (delta, wall friction, flow function). The "
            "design outlet must sit above the bands with the safety factor; Jenike errs wide (safe side).";
+  return c;
+}
+
+// Jenike's flow-function chart: the strength the material gains under consolidation against the
+// strength an arch's own stress can break (the flow-factor line sigma1/ff); they cross at the
+// critical point that sizes B_c.
+Chart flow_function_chart(const HopperMaterial& m, const HopperAssessment& a) {
+  Chart c{"flow_function", "Flow function and flow-factor line (Jenike)", {"major consolidation stress", "kPa"},
+          {"unconfined yield strength", "kPa"}, {}, ""};
+  const HopperEvaluation& nominal = a.nominal();
+  const bool crossing = nominal.jenike.outcome == ArchingOutcome::critical_width;
+  const FlowFunction nominal_ff = scaled_flow_function(m.flow, 1.0);
+  // Three times the critical stress, so the crossing sits in the chart's first third.
+  const double top = crossing ? 3.0 * nominal.jenike.major_stress : 5e3;
+  const bool pascal = top < 2e3;  // a weak arch's stresses read better in Pa
+  const double unit = pascal ? 1.0 : 1e3;
+  c.x.unit = c.y.unit = pascal ? "Pa" : "kPa";
+  // sigma_c at -, + its uncertainty, as the material's uncertainty box has it.
+  const FlowFunction low = scaled_flow_function(m.flow, 1.0 - m.flow.ff_uncertainty),
+                     high = scaled_flow_function(m.flow, 1.0 + m.flow.ff_uncertainty);
+  ChartSeries band{"flow function band (strength uncertainty)", SeriesStyle::band, {}, {}, {}, 0};
+  ChartSeries curve{"flow function " + nominal_ff.describe(), SeriesStyle::line, {}, {}, {}, 0};
+  ChartSeries ff_band{"flow-factor lines over the uncertainty", SeriesStyle::band, {}, {}, {}, 1};
+  ChartSeries ff{"flow-factor line sigma1/ff, ff = " + format_number(nominal.flow_factor, 3), SeriesStyle::dashed,
+                 {}, {}, {}, 1};
+  for (double s1 : range(0.0, top, 41)) {
+    const double x = s1 / unit;
+    band.x.push_back(x);
+    band.y.push_back(low.unconfined_yield_strength(s1) / unit);
+    band.y_upper.push_back(high.unconfined_yield_strength(s1) / unit);
+    curve.x.push_back(x);
+    curve.y.push_back(nominal_ff.unconfined_yield_strength(s1) / unit);
+    ff_band.x.push_back(x);
+    ff_band.y.push_back(x / a.flow_factor.high);
+    ff_band.y_upper.push_back(x / a.flow_factor.low);
+    ff.x.push_back(x);
+    ff.y.push_back(x / nominal.flow_factor);
+  }
+  c.series = {band, ff_band, curve, ff};
+  if (crossing)
+    c.series.push_back({"critical point", SeriesStyle::marker, {nominal.jenike.major_stress / unit},
+                        {nominal.jenike.critical_strength / unit}, {}, 6});
+  c.note = crossing ? "An arch holds where the flow function lies above the flow-factor line; they cross at sigma1* = " +
+                          format_quantity(nominal.jenike.major_stress, c.x.unit, 3) + ", sigma_c,crit = " +
+                          format_quantity(nominal.jenike.critical_strength, c.y.unit, 3) +
+                          ", which sizes B_c = H(theta) sigma_c,crit / (rho_b g)."
+                    : std::string("The curves do not cross (") + arching_label(nominal.jenike.outcome) + ").";
   return c;
 }
 
@@ -168,7 +216,8 @@ Chart emptying_chart(double content, double rate, const Band& total) {
 std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a) {
   const HopperMaterial& m = a.material;
   const HopperEvaluation& nominal = a.nominal();
-  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), rate_against_outlet(h, m, a.models, nominal),
+  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), flow_function_chart(m, a),
+                            rate_against_outlet(h, m, a.models, nominal),
                             pattern_chart(h, m, a.pattern)};
   charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
   const double length = h.is_wedge() ? *h.slot_length : 1.0;

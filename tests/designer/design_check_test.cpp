@@ -2,6 +2,7 @@
 // contains its value, and the verdicts follow the [design] targets.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "designer/case/case_loader.hpp"
@@ -59,9 +60,34 @@ TEST(HopperCheck, BandsContainTheirValues) {
     EXPECT_GE(*e.high, std::get<double>(e.value));
     EXPECT_LT(*e.low, *e.high);  // the material's uncertainty widens every hopper estimate
   }
-  EXPECT_EQ(r.charts.size(), 5u);
+  EXPECT_EQ(r.charts.size(), 6u);
   for (const auto& c : r.charts) EXPECT_FALSE(c.series.empty()) << c.id;
   EXPECT_FALSE(r.assumptions.empty());
+}
+
+// Jenike's flow-function chart: the critical point it marks lies on the flow function
+// (pine: sigma_c = 0.1 sigma1 + 50 Pa) and on the flow-factor line sigma1/ff of the reported ff,
+// and the material is stronger than the line below it, weaker above it.
+TEST(HopperCheck, FlowFunctionChartMarksTheCriticalPoint) {
+  const DesignRecord r = check("cases/pilot_hopper.toml");
+  const auto chart = std::find_if(r.charts.begin(), r.charts.end(), [](const Chart& c) { return c.id == "flow_function"; });
+  ASSERT_NE(chart, r.charts.end());
+  const auto point = std::find_if(chart->series.begin(), chart->series.end(),
+                                  [](const ChartSeries& s) { return s.label == "critical point"; });
+  ASSERT_NE(point, chart->series.end());
+  ASSERT_EQ(chart->x.unit, "Pa");
+  const double s1 = point->x.at(0), sc = point->y.at(0);
+  EXPECT_NEAR(sc, 0.1 * s1 + 50.0, 1e-9 * sc);
+  EXPECT_NEAR(sc, s1 / value(r, "flow_factor"), 1e-9 * sc);
+  // The nominal flow function and ff line of the chart hold the point between their samples.
+  const auto line = [&](const std::string& starts) {
+    return *std::find_if(chart->series.begin(), chart->series.end(),
+                         [&](const ChartSeries& s) { return s.label.rfind(starts, 0) == 0; });
+  };
+  const ChartSeries ff = line("flow function linear"), factor = line("flow-factor line");
+  EXPECT_LT(ff.y.front(), ff.y.back());
+  EXPECT_GT(ff.y.front(), factor.y.front());  // the material is stronger than the arch's stress at low stress
+  EXPECT_LT(ff.y.back(), factor.y.back());    // and weaker at three times the critical stress
 }
 
 // Seed Fig. 3: the critical outlet width rises with the semi-angle.
