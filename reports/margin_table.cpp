@@ -4,15 +4,23 @@
 #include <cmath>
 
 #include "models/units/quantity_format.hpp"
+#include "models/units/quantity_parser.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
 namespace {
 
-// Lengths are read in millimetres; other units as the judge gave them.
-std::string shown(double v, const std::string& unit) {
-  if (unit == "m") return format_quantity(v, "mm", 4);
-  return format_number(v, 4) + (unit.empty() ? "" : " " + unit);
+// In the finding's display unit when it has one (a target written in t/h), lengths in
+// millimetres, other units as the judge gave them.
+std::string shown(double v, const Finding& f) {
+  if (!f.display_unit.empty() && f.display_unit != f.unit) {
+    try {
+      return format_quantity(v * parse_unit(f.unit).si, f.display_unit, 4);
+    } catch (const UnitError&) {  // a unit the parser does not know: as the judge gave it
+    }
+  }
+  if (f.unit == "m") return format_quantity(v, "mm", 4);
+  return format_number(v, 4) + (f.unit.empty() ? "" : " " + f.unit);
 }
 
 int severity(VerdictStatus s) {
@@ -44,9 +52,8 @@ std::vector<MarginRow> margin_table(const Verdict& verdict) {
     const double edge = ceiling ? high : low;  // the band's edge nearest the limit
     MarginRow r;
     r.check = quantity_label(f.quantity);
-    r.requirement = std::string(ceiling ? "<= " : ">= ") + shown(limit, f.unit);
-    r.achieved = shown(value, f.unit) +
-                 (f.low || f.high ? " (" + shown(low, f.unit) + " .. " + shown(high, f.unit) + ")" : std::string());
+    r.requirement = std::string(ceiling ? "<= " : ">= ") + shown(limit, f);
+    r.achieved = shown(value, f) + (f.low || f.high ? " (" + shown(low, f) + " .. " + shown(high, f) + ")" : std::string());
     r.relative_margin = limit != 0.0 ? (ceiling ? limit - edge : edge - limit) / std::abs(limit) : 0.0;
     r.margin = (r.relative_margin >= 0 ? "+" : "") + format_number(100.0 * r.relative_margin, 3) + " %";
     r.status = *f.status;

@@ -121,7 +121,8 @@ json finding_json(const Finding& f) {
           {"low", optional_number(f.low)},
           {"high", optional_number(f.high)},
           {"limit", optional_number(f.limit)},
-          {"unit", f.unit}};
+          {"unit", f.unit},
+          {"display_unit", f.display_unit}};
 }
 
 Finding finding_from(const json& j) {
@@ -135,6 +136,7 @@ Finding finding_from(const json& j) {
   f.high = optional_number_from(j, "high");
   f.limit = optional_number_from(j, "limit");
   f.unit = j.value("unit", "");
+  f.display_unit = j.value("display_unit", "");
   return f;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A design case as read from a case file (cases/*.toml) with command-line overrides applied:
 // the equipment, the material and the engineer's targets, all in SI.
+#include <map>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,6 +26,8 @@ struct Case {
   DemCaseSettings dem;  // [dem]: how `feedflow simulate --solver dem` runs the case
   CelCaseSettings cel;  // [cel]: how `feedflow simulate --solver cel` runs the case
   std::vector<std::string> warnings;  // accepted, but the engineer should know
+  // Dotted key -> the unit its value was written in, where one was (written_units.hpp).
+  std::map<std::string, std::string> written_units = {};
 
   EquipmentKind kind() const { return static_cast<EquipmentKind>(equipment.index()); }
 };

@@ -8,6 +8,7 @@
 #include "designer/case/material_reader.hpp"
 #include "designer/case/table_reader.hpp"
 #include "designer/case/toml_text.hpp"
+#include "designer/case/written_units.hpp"
 
 namespace fs = std::filesystem;
 
@@ -145,6 +146,7 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
 
   Case c;
   c.file = path;
+  c.written_units = written_units(root);
   const toml::table* case_table = table_at(root, "case", path);
   if (case_table) {
     const TableContext ctx{"case", path};

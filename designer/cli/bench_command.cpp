@@ -249,7 +249,7 @@ int run_bench(const BenchArguments& args) {
   const std::string json_text = json.dump(2) + "\n";
   std::vector<OutputFile> files = {{out / "bench.json", json_text, "--out"}, {out / "bench.csv", bench_csv(tables), "--out"}};
   if (args.report)
-    for (auto& f : report_files(out, bench_record(tables, args.quick, wall), out)) files.push_back(std::move(f));
+    for (auto& f : report_files(out, bench_record(tables, args.quick, wall))) files.push_back(std::move(f));
   if (!args.options.json.empty() && !args.options.json_to_stdout())
     files.push_back({args.options.json, json_text, "--json"});
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr,

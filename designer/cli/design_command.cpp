@@ -12,6 +12,7 @@
 #include "designer/cli/commands.hpp"
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/report_files.hpp"
+#include "designer/simulate/simulation_pictures.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/rate_verification.hpp"
@@ -134,7 +135,7 @@ int run_design(const DesignArguments& args) {
   const std::string json = to_json(record).dump(2) + "\n";
   auto files = results_files(folder, json, summary, args.options);
   if (args.report)
-    for (auto& file : report_files(*folder, record, *folder)) files.push_back(std::move(file));
+    for (auto& file : report_files(*folder, record, record_pictures(record, *folder, std::cerr))) files.push_back(std::move(file));
   std::optional<OutputFolder> claimed;
   if (folder) claimed.emplace(*folder, "--out");
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,

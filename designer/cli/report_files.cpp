@@ -2,11 +2,8 @@
 
 #include <chrono>
 #include <ctime>
-#include <iostream>
-#include <stdexcept>
 
 #include "designer/design/hopper_snapshot.hpp"
-#include "designer/simulate/simulation_pictures.hpp"
 #include "reports/document/report_content.hpp"
 #include "reports/document/report_html.hpp"
 #include "reports/document/report_pdf.hpp"
@@ -26,19 +23,10 @@ std::string utc_now() {
 }  // namespace
 
 std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record,
-                                     const std::filesystem::path& results_folder) {
+                                     std::vector<ReportImage> simulation) {
   std::vector<ReportImage> pictures;
   if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));
-  for (const auto& name : record.simulation_runs) {
-    // Lexically: the results folder may not exist yet (a report written with its results).
-    const std::filesystem::path run = (results_folder / name).lexically_normal();
-    try {
-      for (auto& p : simulation_pictures(run)) pictures.push_back(std::move(p));
-    } catch (const std::runtime_error& e) {
-      std::cerr << "feedflow: warning: the report has no pictures of the run in " << run.string()
-                << ": " << e.what() << '\n';
-    }
-  }
+  for (auto& p : simulation) pictures.push_back(std::move(p));
   const ReportContent content = design_report_content(record, pictures, utc_now());
   return {{folder / "report.pdf", render_report_pdf(content).bytes, "--out"},
           {folder / "report.html", report_html(content), "--out"}};

@@ -2,6 +2,7 @@
 
 #include "models/core/version.hpp"
 #include "models/units/quantity_format.hpp"
+#include "models/units/quantity_parser.hpp"
 
 namespace feedflow {
 namespace {
@@ -64,6 +65,19 @@ std::vector<DescribedInput> described_material(const Material& m) {
   return out;
 }
 
+// Each input the case wrote with a unit is shown in that unit ("5 t/h", not "1.389 kg/s").
+void in_written_units(const Case& c, std::vector<InputValue>& inputs) {
+  for (auto& in : inputs) {
+    const auto written = c.written_units.find(in.key);
+    if (written == c.written_units.end() || !std::holds_alternative<double>(in.value)) continue;
+    try {
+      if (parse_unit(written->second).dimension == parse_unit(in.si_unit).dimension)
+        in.display = format_quantity(std::get<double>(in.value), written->second);
+    } catch (const UnitError&) {  // a unit the display cannot take: the default display stays
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<MaterialParameter> material_parameters(const Material& m) {
@@ -99,6 +113,7 @@ std::vector<InputValue> case_inputs(const Case& c) {
     d.value.key = "material." + d.value.key;
     out.push_back(std::move(d.value));
   }
+  in_written_units(c, out);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "designer/design/judge.hpp"
+#include "designer/design/target_units.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "models/chute/cohesive_slope.hpp"
 #include "models/core/band.hpp"
@@ -111,6 +112,7 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
     if (deposit) deposit_results(*deposit, row, record.results);
   }
   VerdictBuilder verdict;
+  show_in_target_units(c, record.results);
   for (auto& f : judge_chute(chute, c.design, record.results).findings) verdict.add(std::move(f));
   for (auto& note : notes) verdict.add(std::move(note));
   record.verdict = verdict.verdict();

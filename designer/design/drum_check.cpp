@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "designer/design/judge.hpp"
+#include "designer/design/target_units.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "models/chute/mu_i_rheology.hpp"
 #include "models/core/band.hpp"
@@ -104,6 +105,7 @@ void check_drum(const Case& c, const Drum& drum, DesignRecord& record) {
   const bool rolling = regime.regime == DrumRegime::Rolling;
   if (rolling && m.surface_flow) angle_results(drum, m, thresholds, record.results);
   VerdictBuilder verdict;
+  show_in_target_units(c, record.results);
   for (auto& f : judge_drum(drum, c.design, record.results).findings) verdict.add(std::move(f));
   if (!rolling)
     verdict.add(Finding{std::nullopt, "dynamic_angle_of_repose",

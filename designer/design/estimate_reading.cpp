@@ -46,6 +46,7 @@ Finding finding(std::optional<VerdictStatus> status, std::string key, std::strin
     f.low = e->low;
     f.high = e->high;
     f.unit = e->unit;
+    f.display_unit = e->display_unit;
   }
   return f;
 }

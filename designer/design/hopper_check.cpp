@@ -2,6 +2,7 @@
 
 #include "designer/design/hopper_charts.hpp"
 #include "designer/design/judge.hpp"
+#include "designer/design/target_units.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "models/units/quantity_format.hpp"
 
@@ -17,6 +18,7 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
   HopperEstimates estimates = hopper_estimates(c.material, h, a);
   record.results = std::move(estimates.results);
   VerdictBuilder verdict;
+  show_in_target_units(c, record.results);
   for (auto& f : judge_hopper(h, c.design, record.results).findings) verdict.add(std::move(f));
   for (auto& note : estimates.notes) verdict.add(std::move(note));
   record.verdict = verdict.verdict();

@@ -4,6 +4,7 @@
 #include <optional>
 #include <sstream>
 
+#include "designer/design/target_units.hpp"
 #include "designer/design/verdict_builder.hpp"
 #include "designer/equipment/equipment_registry.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
@@ -102,6 +103,7 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   // The judge of every rung, then the adapter's notes on the run.
   const std::vector<std::string> notes = std::move(record.verdict.reasons);
   VerdictBuilder verdict;
+  show_in_target_units(request.case_data, record.results);
   for (auto& finding : equipment_of(request.case_data.kind()).judge(request.case_data, record.results).findings)
     verdict.add(std::move(finding));
   for (const auto& note : notes) verdict.add(Finding{.text = note});

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "fullsim/cel/cel_field_snapshots.hpp"
@@ -225,6 +226,22 @@ std::vector<ReportImage> simulation_pictures(const fs::path& run_folder) {
   }
   if (fs::is_regular_file(run_folder / "fields.h5", ec)) return field_pictures(run_folder / "fields.h5");
   return {};
+}
+
+std::vector<ReportImage> record_pictures(const DesignRecord& record, const fs::path& results_folder,
+                                         std::ostream& warnings) {
+  std::vector<ReportImage> pictures;
+  for (const auto& name : record.simulation_runs) {
+    // Lexically: the results folder may not exist yet (a report written with its results).
+    const fs::path run = (results_folder / name).lexically_normal();
+    try {
+      for (auto& p : simulation_pictures(run)) pictures.push_back(std::move(p));
+    } catch (const std::runtime_error& e) {
+      warnings << "feedflow: warning: the report has no pictures of the run in " << run.string() << ": " << e.what()
+               << '\n';
+    }
+  }
+  return pictures;
 }
 
 }  // namespace feedflow

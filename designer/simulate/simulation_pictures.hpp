@@ -5,8 +5,10 @@
 // at a glance); a CEL run's cells coloured by speed at the same three times, and by density and
 // mean stress at the last, with the free surface. The walls are the outline the file keeps.
 #include <filesystem>
+#include <ostream>
 #include <vector>
 
+#include "models/core/design_record.hpp"
 #include "reports/document/report_content.hpp"
 
 namespace feedflow {
@@ -15,5 +17,11 @@ namespace feedflow {
 // empty when the folder holds no snapshot file. Throws std::runtime_error naming the file when
 // one cannot be read, NotAvailable when the off-screen renderer is missing.
 std::vector<ReportImage> simulation_pictures(const std::filesystem::path& run_folder);
+
+// The pictures of every run a record names (DesignRecord::simulation_runs, relative to
+// `results_folder`, where its results file is or will be); a run whose snapshots cannot be
+// drawn is named in a warning on `warnings` and left out.
+std::vector<ReportImage> record_pictures(const DesignRecord& record, const std::filesystem::path& results_folder,
+                                         std::ostream& warnings);
 
 }  // namespace feedflow

@@ -151,6 +151,7 @@ void apply_rate_verification(const Case& c, const RateVerification& v, DesignRec
   verified.high = *v.reference.value + v.reference.error_bar.value_or(0.0);
   verified.model = v.reference.source;
   verified.rung = Rung::L2;
+  verified.display_unit = reduced.display_unit;
   it->second = verified;
   record.results.emplace(it + 1, reduced_model_key("mass_flow_rate"), reduced);
   const std::string pattern_note = verify_flow_pattern(v, record.results);

@@ -51,6 +51,7 @@ struct Finding {
   std::optional<double> high = {};
   std::optional<double> limit = {};
   std::string unit = {};                     // of value, low, high and limit
+  std::string display_unit = {};             // unit people read them in (the estimate's); empty = unit
 };
 
 struct Verdict {

@@ -152,6 +152,36 @@ TEST_F(FeedflowCli, HelpAndVersion) {
   EXPECT_NE(run_feedflow("version", dir_).out.find("feedflow 0."), std::string::npos);
 }
 
+// A throughput required in t/h is reported in t/h: the input as written, every mass flow rate
+// and the margin table's requirement and achieved value, in results.txt, results.json (the SI
+// value with display_unit "t/h") and the report re-rendered from the JSON; the rate itself is
+// the same as with the target written in kg/s (5 t/h = 1.3889 kg/s).
+TEST_F(FeedflowCli, ThroughputWrittenInTonnesPerHourIsReportedSo) {
+  const auto r = run_feedflow(
+      "design cases/pilot_hopper.toml --set \"design.required_throughput=5 t/h\" --set hopper.outlet_width=45mm --report --out th", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* text : {"required throughput       5 t/h", "mass flow rate                 >= 5 t/h"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+  const auto json = nlohmann::json::parse(slurp(dir_ / "th/results.json"));
+  const auto& rate = json.at("results").at("mass_flow_rate");
+  EXPECT_EQ(rate.at("unit"), "kg/s");
+  EXPECT_EQ(rate.at("display_unit"), "t/h");
+  const auto si = run_feedflow("design cases/pilot_hopper.toml --set design.required_throughput=1.3889kg/s "
+                               "--set hopper.outlet_width=45mm --json - -q", dir_);
+  const auto plain = nlohmann::json::parse(si.out);
+  EXPECT_EQ(plain.at("results").at("mass_flow_rate").at("value"), rate.at("value"));
+  EXPECT_FALSE(plain.at("results").at("mass_flow_rate").contains("display_unit"));
+  ASSERT_EQ(run_feedflow("report th/results.json --out again -q", dir_).exit_code, 0);
+  FILE* pipe = popen(("pdftotext -layout '" + (dir_ / "again/report.pdf").string() + "' -").c_str(), "r");
+  std::string text;
+  char buf[4096];
+  while (pipe && fgets(buf, sizeof buf, pipe)) text += buf;
+  if (pipe) pclose(pipe);
+  EXPECT_NE(text.find(">= 5 t/h"), std::string::npos) << text;
+  EXPECT_NE(text.find("required throughput"), std::string::npos);
+  EXPECT_EQ(text.find("1.389 kg/s"), std::string::npos) << "the target is shown as written";
+}
+
 }  // namespace
 
 namespace {
