@@ -193,6 +193,15 @@ json to_json(const DesignRecord& r) {
   j["provenance"] = {{"command_line", r.command_line}};
   if (!r.simulation_runs.empty()) j["provenance"]["simulation_runs"] = r.simulation_runs;
   j["timing"] = {{"wall_s", r.wall_seconds}};
+  if (!r.performance.empty()) {
+    j["performance"] = json::array();
+    for (const auto& p : r.performance) {
+      json block = {{"title", p.title}, {"wall_s", p.wall_seconds}, {"figures", json::object()}, {"phases_s", json::object()}};
+      for (const auto& [name, value] : p.figures) block["figures"][name] = value;
+      for (const auto& [name, seconds] : p.phases) block["phases_s"][name] = seconds;
+      j["performance"].push_back(std::move(block));
+    }
+  }
   return j;
 }
 
@@ -232,6 +241,15 @@ DesignRecord design_record_from_json(const json& j) {
     }
     for (const auto& c : j.value("charts", json::array())) r.charts.push_back(chart_from(c));
     r.assumptions = j.value("assumptions", std::vector<std::string>{});
+    for (const auto& b : j.value("performance", json::array())) {
+      PerformanceBlock p;
+      p.title = b.value("title", "");
+      p.wall_seconds = b.value("wall_s", 0.0);
+      const json figures = b.value("figures", json::object()), phases = b.value("phases_s", json::object());
+      for (const auto& [name, value] : figures.items()) p.figures.emplace_back(name, value.get<std::string>());
+      for (const auto& [name, seconds] : phases.items()) p.phases.emplace_back(name, seconds.get<double>());
+      r.performance.push_back(std::move(p));
+    }
     if (j.contains("provenance")) {
       r.command_line = j.at("provenance").value("command_line", "");
       r.simulation_runs = j.at("provenance").value("simulation_runs", std::vector<std::string>{});

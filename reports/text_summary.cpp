@@ -6,6 +6,7 @@
 
 #include "models/units/quantity_format.hpp"
 #include "reports/margin_table.hpp"
+#include "reports/performance_rows.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -70,6 +71,17 @@ std::string text_summary(const DesignRecord& r) {
     }
   }
   for (const auto& reason : r.verdict.reasons) out << "  - " << reason << '\n';
+  for (const auto& block : r.performance) {
+    out << "\nPerformance: " << block.title << '\n';
+    char line[256];
+    for (const auto& [name, value, share] : performance_rows(block)) {
+      if (share.empty())
+        std::snprintf(line, sizeof line, "  %-30s %s\n", name.c_str(), value.c_str());
+      else
+        std::snprintf(line, sizeof line, "  %-30s %-28s %s\n", name.c_str(), value.c_str(), share.c_str());
+      out << line;
+    }
+  }
   out << "\nWall time: "
       << format_quantity(r.wall_seconds, r.wall_seconds < 1.0 ? "ms" : "s", 3) << '\n';
   return out.str();

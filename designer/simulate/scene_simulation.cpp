@@ -99,6 +99,9 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   out.end = result.end == RunEnd::interrupted ? SimulationEnd::interrupted : SimulationEnd::completed;
   DesignRecord& record = out.record;
   adapter.measure(result, record);
+  PerformanceBlock performance{result.performance.title(), result.performance.wall_seconds(),
+                               result.performance.figures(), result.performance.phases()};
+  record.performance.push_back(std::move(performance));
   add_reduced_model_results(request.case_data, adapter.reduced_model_quantities(), record);
   // The judge of every rung, then the adapter's notes on the run.
   const std::vector<std::string> notes = std::move(record.verdict.reasons);

@@ -41,6 +41,10 @@ class RunReport {
   // The block, ending in a newline. Time not booked to any phase is shown as "other".
   std::string render() const;
 
+  const std::string& title() const { return title_; }
+  const std::vector<std::pair<std::string, double>>& phases() const { return phases_; }
+  const std::vector<std::pair<std::string, std::string>>& figures() const { return figures_; }
+
  private:
   std::size_t phase_index(std::string_view phase);
 

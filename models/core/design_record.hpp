@@ -60,6 +60,15 @@ struct Verdict {
   std::vector<Finding> findings = {};  // the reasons a judge gave, with their keys and numbers
 };
 
+// How a simulation spent its time: the performance block that ends the run (LAMMPS-style): wall
+// time, throughput figures as text with their units, and the time of each phase.
+struct PerformanceBlock {
+  std::string title;                                     // "DEM run", "CEL run"
+  double wall_seconds = 0.0;
+  std::vector<std::pair<std::string, std::string>> figures = {};  // "throughput" -> "1.2e6 particle-steps/s"
+  std::vector<std::pair<std::string, double>> phases = {};        // "pairs" -> seconds
+};
+
 struct DesignRecord {
   std::string feedflow_version;
   std::string case_name;
@@ -75,6 +84,7 @@ struct DesignRecord {
   // Folders of the simulations behind the results (their snapshot files give the report its
   // pictures), relative to the folder of the results file.
   std::vector<std::string> simulation_runs = {};
+  std::vector<PerformanceBlock> performance = {};  // of the simulations run for this record
   double wall_seconds = 0.0;
 };
 

@@ -5,6 +5,7 @@
 
 #include "models/units/quantity_format.hpp"
 #include "reports/margin_table.hpp"
+#include "reports/performance_rows.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -120,6 +121,12 @@ ReportContent design_report_content(const DesignRecord& r, const std::vector<Rep
   else
     c.blocks.push_back(ReportBullets{r.assumptions});
 
+  for (const auto& block : r.performance) {
+    c.blocks.push_back(ReportHeading{"Performance: " + block.title});
+    ReportTable t{{"Figure or phase", "Value or time", "Share of the wall time"}, {}, {0.4, 0.4, 0.2}};
+    for (const auto& [name, value, share] : performance_rows(block)) t.rows.push_back({name, value, share});
+    c.blocks.push_back(std::move(t));
+  }
   add_material_sheet(c, r);
   add_provenance(c, r, generated);
   return c;

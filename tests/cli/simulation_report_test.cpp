@@ -67,6 +67,15 @@ TEST_F(SimulationReport, CelHopperReportShowsItsFieldsAndIsRedrawn) {
   EXPECT_NE(text.find("CEL mean stress"), std::string::npos);
   const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
   EXPECT_EQ(json.at("provenance").at("simulation_runs"), nlohmann::json::array({"."}));
+  // The run's performance block: its throughput, and phases that add up to no more than the run.
+  const auto& performance = json.at("performance").at(0);
+  EXPECT_NE(performance.at("figures").at("throughput").get<std::string>().find("cell updates/s"), std::string::npos);
+  double phases = 0.0;
+  for (const auto& [name, seconds] : performance.at("phases_s").items()) phases += seconds.get<double>();
+  EXPECT_GT(phases, 0.5 * performance.at("wall_s").get<double>());
+  EXPECT_LE(phases, performance.at("wall_s").get<double>() * (1 + 1e-9));
+  EXPECT_LE(performance.at("wall_s").get<double>(), json.at("timing").at("wall_s").get<double>());
+  EXPECT_NE(text.find("Performance: CEL-FEM run"), std::string::npos);
 
   const auto again = run_feedflow("report run/results.json --out elsewhere -q", dir_);
   ASSERT_EQ(again.exit_code, 0) << again.err;
@@ -86,6 +95,10 @@ TEST_F(SimulationReport, DemDrumReportShowsTheParticlesInTheirShell) {
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 3);
   const std::string text = shell("pdftotext '" + (dir_ / "run/report.pdf").string() + "' -");
   EXPECT_EQ(count(text, "DEM particles coloured by speed at t ="), 3) << text;
+  EXPECT_NE(text.find("particle-steps/s"), std::string::npos) << "the performance block is in the report";
+  const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
+  for (const char* phase : {"pairs", "neighbours", "walls", "integration"})
+    EXPECT_GT(json.at("performance").at(0).at("phases_s").at(phase).get<double>(), 0.0) << phase;
   const feedflow::Hdf5File f(dir_ / "run/particles.h5", feedflow::Hdf5File::Mode::read);
   const auto outline = feedflow::read_outline(f, "/outline");
   ASSERT_GE(outline.size(), 32u);

@@ -42,6 +42,31 @@ TEST(ResultsJson, HasTheDocumentedShape) {
   EXPECT_TRUE(j.at("timing").at("wall_s").is_number());
 }
 
+// A simulation's provenance (its run folders), the display units of results and findings, and
+// its performance block (figures, phases in order) are written and read back as they were;
+// results.txt shows the block with each phase's share of the wall time and "other" for the rest.
+TEST(ResultsJson, SimulationProvenanceUnitsAndPerformanceRoundTrip) {
+  DesignRecord a = sample();
+  a.simulation_runs = {".", "../verify/run_6"};
+  a.results[0].second.display_unit = "in";
+  a.verdict.findings = {{VerdictStatus::pass, "mass_flow_rate", "5 t/h", 2.0, 1.5, 2.5, 1.3889, "kg/s", "t/h"}};
+  a.performance = {{"DEM run", 10.0, {{"throughput", "1.2e+06 particle-steps/s"}}, {{"pairs", 6.0}, {"walls", 2.5}}}};
+  const DesignRecord b = design_record_from_json(nlohmann::ordered_json::parse(to_json(a).dump()));
+  EXPECT_EQ(b.simulation_runs, a.simulation_runs);
+  EXPECT_EQ(b.results[0].second.display_unit, "in");
+  EXPECT_EQ(b.verdict.findings.at(0).display_unit, "t/h");
+  ASSERT_EQ(b.performance.size(), 1u);
+  EXPECT_EQ(b.performance[0].title, "DEM run");
+  EXPECT_EQ(b.performance[0].wall_seconds, 10.0);
+  EXPECT_EQ(b.performance[0].figures, a.performance[0].figures);
+  EXPECT_EQ(b.performance[0].phases, a.performance[0].phases);
+  const std::string text = text_summary(b);
+  for (const char* line : {"Performance: DEM run", "1.2e+06 particle-steps/s", "phase: pairs", "60 %", "phase: other",
+                           "15 %", "mass flow rate"})
+    EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
+  EXPECT_NE(text.find(">= 5 t/h"), std::string::npos) << "the margin table reads the finding's display unit\n" << text;
+}
+
 // Writing and reading back gives the same record, results in the same order, inputs shown as a
 // person reads them ("30 deg", not "0.5235987755982988 rad": a report rendered again from the
 // JSON shows what the first one showed).
