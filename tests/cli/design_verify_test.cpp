@@ -75,11 +75,7 @@ TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
   const auto saved = nlohmann::json::parse(slurp(dir / "out/pilot_hopper/results.json"));
   ASSERT_EQ(saved["provenance"]["simulation_runs"].size(), 1u);
   EXPECT_TRUE(saved["provenance"]["simulation_runs"][0].get<std::string>().starts_with("../pilot_hopper_verify/"));
-  FILE* pipe = popen(("pdftotext '" + (dir / "out/pilot_hopper/report.pdf").string() + "' -").c_str(), "r");
-  std::string text;
-  char buf[4096];
-  while (pipe && fgets(buf, sizeof buf, pipe)) text += buf;
-  if (pipe) pclose(pipe);
+  const std::string text = pdf_text(dir / "out/pilot_hopper/report.pdf");
   EXPECT_NE(text.find("CEL material speed at t ="), std::string::npos) << text;
   EXPECT_NE(text.find("CEL mean stress"), std::string::npos);
   fs::remove_all(dir);

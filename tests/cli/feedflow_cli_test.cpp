@@ -172,11 +172,7 @@ TEST_F(FeedflowCli, ThroughputWrittenInTonnesPerHourIsReportedSo) {
   EXPECT_EQ(plain.at("results").at("mass_flow_rate").at("value"), rate.at("value"));
   EXPECT_FALSE(plain.at("results").at("mass_flow_rate").contains("display_unit"));
   ASSERT_EQ(run_feedflow("report th/results.json --out again -q", dir_).exit_code, 0);
-  FILE* pipe = popen(("pdftotext -layout '" + (dir_ / "again/report.pdf").string() + "' -").c_str(), "r");
-  std::string text;
-  char buf[4096];
-  while (pipe && fgets(buf, sizeof buf, pipe)) text += buf;
-  if (pipe) pclose(pipe);
+  const std::string text = feedflow::testing::pdf_text(dir_ / "again/report.pdf", true);
   EXPECT_NE(text.find(">= 5 t/h"), std::string::npos) << text;
   EXPECT_NE(text.find("required throughput"), std::string::npos);
   EXPECT_EQ(text.find("1.389 kg/s"), std::string::npos) << "the target is shown as written";

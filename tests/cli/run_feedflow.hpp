@@ -1,5 +1,6 @@
 #pragma once
 // Runs the real feedflow executable in a folder and captures its exit code, stdout and stderr.
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +56,22 @@ inline Run run_feedflow(const std::string& args, const std::filesystem::path& fo
   if (stdout_to.empty()) std::filesystem::remove(out);
   std::filesystem::remove(err);
   return r;
+}
+
+// The standard output of a shell command (pdftotext, pdfimages); empty when it cannot run.
+inline std::string command_output(const std::string& command) {
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
+  pclose(pipe);
+  return out;
+}
+
+// The text of a PDF (pdftotext; `layout` keeps the columns of tables).
+inline std::string pdf_text(const std::filesystem::path& pdf, bool layout = false) {
+  return command_output(std::string("pdftotext ") + (layout ? "-layout '" : "'") + pdf.string() + "' -");
 }
 
 }  // namespace feedflow::testing

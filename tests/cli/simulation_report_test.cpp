@@ -13,25 +13,17 @@
 #include "run_feedflow.hpp"
 
 namespace fs = std::filesystem;
+using feedflow::testing::command_output;
+using feedflow::testing::pdf_text;
 using feedflow::testing::run_feedflow;
 using feedflow::testing::scratch_folder;
 using feedflow::testing::slurp;
 
 namespace {
 
-std::string shell(const std::string& command) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  pclose(pipe);
-  return out;
-}
-
 // The images in a PDF of this width and height (pdfimages -list).
 int images_of_size(const fs::path& pdf, int width, int height) {
-  const std::string list = shell("pdfimages -list '" + pdf.string() + "'");
+  const std::string list = command_output("pdfimages -list '" + pdf.string() + "'");
   const std::regex row("image +" + std::to_string(width) + " +" + std::to_string(height) + " ");
   return static_cast<int>(std::distance(std::sregex_iterator(list.begin(), list.end(), row), std::sregex_iterator()));
 }
@@ -60,7 +52,7 @@ TEST_F(SimulationReport, CelHopperReportShowsItsFieldsAndIsRedrawn) {
                               dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 5);
-  const std::string text = shell("pdftotext '" + (dir_ / "run/report.pdf").string() + "' -");
+  const std::string text = pdf_text(dir_ / "run/report.pdf");
   EXPECT_EQ(count(text, "CEL material speed at t ="), 3) << text;
   EXPECT_NE(text.find("on 20 mm cells"), std::string::npos);
   EXPECT_NE(text.find("CEL bulk density"), std::string::npos);
@@ -93,7 +85,7 @@ TEST_F(SimulationReport, DemDrumReportShowsTheParticlesInTheirShell) {
                               dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 3);
-  const std::string text = shell("pdftotext '" + (dir_ / "run/report.pdf").string() + "' -");
+  const std::string text = pdf_text(dir_ / "run/report.pdf");
   EXPECT_EQ(count(text, "DEM particles coloured by speed at t ="), 3) << text;
   EXPECT_NE(text.find("particle-steps/s"), std::string::npos) << "the performance block is in the report";
   const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
@@ -113,7 +105,7 @@ TEST_F(SimulationReport, DemHopperReportShowsSpeedAndLayers) {
   const auto r = run_feedflow("simulate twin.toml --solver dem --time 0.5s --out run -q --report", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 6);
-  const std::string text = shell("pdftotext '" + (dir_ / "run/report.pdf").string() + "' -");
+  const std::string text = pdf_text(dir_ / "run/report.pdf");
   EXPECT_EQ(count(text, "DEM particles coloured by speed"), 3) << text;
   EXPECT_EQ(count(text, "DEM particles coloured by the layer they started in"), 3) << text;
   EXPECT_EQ(text.find(" 0 particles"), std::string::npos) << text;
