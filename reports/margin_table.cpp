@@ -53,7 +53,9 @@ std::vector<MarginRow> margin_table(const Verdict& verdict) {
     MarginRow r;
     r.check = quantity_label(f.quantity);
     r.requirement = std::string(ceiling ? "<= " : ">= ") + shown(limit, f);
-    r.achieved = shown(value, f) + (f.low || f.high ? " (" + shown(low, f) + " .. " + shown(high, f) + ")" : std::string());
+    r.achieved =
+        shown(value, f) +
+        (f.low || f.high ? " (" + shown(low, f) + " .. " + shown(high, f) + ")" : std::string());
     r.relative_margin = limit != 0.0 ? (ceiling ? limit - edge : edge - limit) / std::abs(limit) : 0.0;
     r.margin = (r.relative_margin >= 0 ? "+" : "") + format_number(100.0 * r.relative_margin, 3) + " %";
     r.status = *f.status;

@@ -10,7 +10,8 @@
 
 namespace feedflow {
 
-using PerformanceRow = std::array<std::string, 3>;  // name, value or time, share ("41.2 %"; empty for a figure)
+using PerformanceRow =
+    std::array<std::string, 3>;  // name, value or time, share ("41.2 %"; empty for a figure)
 
 std::vector<PerformanceRow> performance_rows(const PerformanceBlock& block);
 

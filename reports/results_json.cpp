@@ -196,7 +196,10 @@ json to_json(const DesignRecord& r) {
   if (!r.performance.empty()) {
     j["performance"] = json::array();
     for (const auto& p : r.performance) {
-      json block = {{"title", p.title}, {"wall_s", p.wall_seconds}, {"figures", json::object()}, {"phases_s", json::object()}};
+      json block = {{"title", p.title},
+                    {"wall_s", p.wall_seconds},
+                    {"figures", json::object()},
+                    {"phases_s", json::object()}};
       for (const auto& [name, value] : p.figures) block["figures"][name] = value;
       for (const auto& [name, seconds] : p.phases) block["phases_s"][name] = seconds;
       j["performance"].push_back(std::move(block));
@@ -245,9 +248,12 @@ DesignRecord design_record_from_json(const json& j) {
       PerformanceBlock p;
       p.title = b.value("title", "");
       p.wall_seconds = b.value("wall_s", 0.0);
-      const json figures = b.value("figures", json::object()), phases = b.value("phases_s", json::object());
-      for (const auto& [name, value] : figures.items()) p.figures.emplace_back(name, value.get<std::string>());
-      for (const auto& [name, seconds] : phases.items()) p.phases.emplace_back(name, seconds.get<double>());
+      const json figures = b.value("figures", json::object()),
+                 phases = b.value("phases_s", json::object());
+      for (const auto& [name, value] : figures.items())
+        p.figures.emplace_back(name, value.get<std::string>());
+      for (const auto& [name, seconds] : phases.items())
+        p.phases.emplace_back(name, seconds.get<double>());
       r.performance.push_back(std::move(p));
     }
     if (j.contains("provenance")) {

@@ -78,7 +78,8 @@ std::string text_summary(const DesignRecord& r) {
       if (share.empty())
         std::snprintf(line, sizeof line, "  %-30s %s\n", name.c_str(), value.c_str());
       else
-        std::snprintf(line, sizeof line, "  %-30s %-28s %s\n", name.c_str(), value.c_str(), share.c_str());
+        std::snprintf(line, sizeof line, "  %-30s %-28s %s\n", name.c_str(), value.c_str(),
+                      share.c_str());
       out << line;
     }
   }

@@ -7,9 +7,11 @@
 namespace feedflow {
 namespace {
 
-void collect(const toml::table& table, const std::string& prefix, std::map<std::string, std::string>& out) {
+void collect(const toml::table& table, const std::string& prefix,
+             std::map<std::string, std::string>& out) {
   for (auto&& [k, node] : table) {
-    const std::string key = prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    const std::string key =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
     const toml::node* value = &node;
     if (const auto* t = node.as_table()) {
       if (const auto* v = t->get("value")) {

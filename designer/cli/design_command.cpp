@@ -8,13 +8,13 @@
 
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
-#include "designer/cli/exit_codes.hpp"
 #include "designer/cli/commands.hpp"
+#include "designer/cli/exit_codes.hpp"
 #include "designer/cli/invocation.hpp"
-#include "designer/cli/report_files.hpp"
-#include "designer/simulate/simulation_pictures.hpp"
 #include "designer/cli/output_files.hpp"
+#include "designer/cli/report_files.hpp"
 #include "designer/design/design_check.hpp"
+#include "designer/simulate/simulation_pictures.hpp"
 #include "designer/verify/rate_verification.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
@@ -102,7 +102,8 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
     return false;
   }
   apply_rate_verification(c, v, record);
-  if (v.status == "done") record.simulation_runs.push_back(std::filesystem::absolute(v.finest_run).string());
+  if (v.status == "done")
+    record.simulation_runs.push_back(std::filesystem::absolute(v.finest_run).string());
   return true;
 }
 
@@ -130,12 +131,15 @@ int run_design(const DesignArguments& args) {
   const auto folder = output_folder(args.options, c.name, "", args.report);
   if (folder)  // the runs as seen from the results file, so the folder can move with them
     for (auto& run : record.simulation_runs)
-      run = std::filesystem::absolute(run).lexically_relative(std::filesystem::absolute(*folder)).string();
+      run = std::filesystem::absolute(run)
+                .lexically_relative(std::filesystem::absolute(*folder))
+                .string();
   const std::string summary = text_summary(record);
   const std::string json = to_json(record).dump(2) + "\n";
   auto files = results_files(folder, json, summary, args.options);
   if (args.report)
-    for (auto& file : report_files(*folder, record, record_pictures(record, *folder, std::cerr))) files.push_back(std::move(file));
+    for (auto& file : report_files(*folder, record, record_pictures(record, *folder, std::cerr)))
+      files.push_back(std::move(file));
   std::optional<OutputFolder> claimed;
   if (folder) claimed.emplace(*folder, "--out");
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,

@@ -43,7 +43,9 @@ int run_report(const ReportArguments& args) {
     throw InputError(args.input, "", std::string("not a feedflow results file: ") + e.what());
   }
   const fs::path folder = args.options.out.empty() ? input.parent_path() : fs::path(args.options.out);
-  const auto written = write_outputs(report_files(folder, record, record_pictures(record, input.parent_path(), std::cerr)), nullptr, args.options.verbose, nullptr);
+  const auto written = write_outputs(
+      report_files(folder, record, record_pictures(record, input.parent_path(), std::cerr)),
+      nullptr, args.options.verbose, nullptr);
   if (!args.options.quiet) {
     std::cout << "Written: ";
     for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();

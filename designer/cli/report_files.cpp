@@ -22,7 +22,8 @@ std::string utc_now() {
 
 }  // namespace
 
-std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record,
+std::vector<OutputFile> report_files(const std::filesystem::path& folder,
+                                     const DesignRecord& record,
                                      std::vector<ReportImage> simulation) {
   std::vector<ReportImage> pictures;
   if (auto picture = hopper_stress_snapshot(record)) pictures.push_back(std::move(*picture));

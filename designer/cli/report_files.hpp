@@ -12,7 +12,8 @@
 
 namespace feedflow {
 
-std::vector<OutputFile> report_files(const std::filesystem::path& folder, const DesignRecord& record,
+std::vector<OutputFile> report_files(const std::filesystem::path& folder,
+                                     const DesignRecord& record,
                                      std::vector<ReportImage> simulation = {});
 
 }  // namespace feedflow

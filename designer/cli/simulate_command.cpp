@@ -16,9 +16,9 @@
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
 #include "designer/cli/report_files.hpp"
-#include "designer/simulate/simulation_pictures.hpp"
 #include "designer/design/case_inputs.hpp"
 #include "designer/simulate/simulation.hpp"
+#include "designer/simulate/simulation_pictures.hpp"
 #include "designer/simulate/solver_choice.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/atomic_file.hpp"
@@ -97,7 +97,9 @@ int run_simulate(const SimulateArguments& args) {
   auto files = results_files(request.out, json, summary, args.options);
   if (!outcome.series.empty()) files.push_back({request.out / "timeseries.csv", to_csv(outcome.series), "--out"});
   if (args.report)
-    for (auto& file : report_files(request.out, record, record_pictures(record, request.out, std::cerr))) files.push_back(std::move(file));
+    for (auto& file :
+         report_files(request.out, record, record_pictures(record, request.out, std::cerr)))
+      files.push_back(std::move(file));
   auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr, args.options.verbose,
                                &folder);
   for (auto& f : outcome.files) written.push_back(std::move(f));

@@ -81,8 +81,12 @@ Chart outlet_against_angle(const Hopper& h, const HopperMaterial& m, const Hoppe
 // strength an arch's own stress can break (the flow-factor line sigma1/ff); they cross at the
 // critical point that sizes B_c.
 Chart flow_function_chart(const HopperMaterial& m, const HopperAssessment& a) {
-  Chart c{"flow_function", "Flow function and flow-factor line (Jenike)", {"major consolidation stress", "kPa"},
-          {"unconfined yield strength", "kPa"}, {}, ""};
+  Chart c{"flow_function",
+          "Flow function and flow-factor line (Jenike)",
+          {"major consolidation stress", "kPa"},
+          {"unconfined yield strength", "kPa"},
+          {},
+          ""};
   const HopperEvaluation& nominal = a.nominal();
   const bool crossing = nominal.jenike.outcome == ArchingOutcome::critical_width;
   const FlowFunction nominal_ff = scaled_flow_function(m.flow, 1.0);
@@ -97,8 +101,12 @@ Chart flow_function_chart(const HopperMaterial& m, const HopperAssessment& a) {
   ChartSeries band{"flow function band (strength uncertainty)", SeriesStyle::band, {}, {}, {}, 0};
   ChartSeries curve{"flow function " + nominal_ff.describe(), SeriesStyle::line, {}, {}, {}, 0};
   ChartSeries ff_band{"flow-factor lines over the uncertainty", SeriesStyle::band, {}, {}, {}, 1};
-  ChartSeries ff{"flow-factor line sigma1/ff, ff = " + format_number(nominal.flow_factor, 3), SeriesStyle::dashed,
-                 {}, {}, {}, 1};
+  ChartSeries ff{"flow-factor line sigma1/ff, ff = " + format_number(nominal.flow_factor, 3),
+                 SeriesStyle::dashed,
+                 {},
+                 {},
+                 {},
+                 1};
   for (double s1 : range(0.0, top, 41)) {
     const double x = s1 / unit;
     band.x.push_back(x);
@@ -114,13 +122,20 @@ Chart flow_function_chart(const HopperMaterial& m, const HopperAssessment& a) {
   }
   c.series = {band, ff_band, curve, ff};
   if (crossing)
-    c.series.push_back({"critical point", SeriesStyle::marker, {nominal.jenike.major_stress / unit},
-                        {nominal.jenike.critical_strength / unit}, {}, 6});
-  c.note = crossing ? "An arch holds where the flow function lies above the flow-factor line; they cross at sigma1* = " +
-                          format_quantity(nominal.jenike.major_stress, c.x.unit, 3) + ", sigma_c,crit = " +
-                          format_quantity(nominal.jenike.critical_strength, c.y.unit, 3) +
-                          ", which sizes B_c = H(theta) sigma_c,crit / (rho_b g)."
-                    : std::string("The curves do not cross (") + arching_label(nominal.jenike.outcome) + ").";
+    c.series.push_back({"critical point",
+                        SeriesStyle::marker,
+                        {nominal.jenike.major_stress / unit},
+                        {nominal.jenike.critical_strength / unit},
+                        {},
+                        6});
+  c.note =
+      crossing
+          ? "An arch holds where the flow function lies above the flow-factor line; they cross at "
+            "sigma1* = " +
+                format_quantity(nominal.jenike.major_stress, c.x.unit, 3) + ", sigma_c,crit = " +
+                format_quantity(nominal.jenike.critical_strength, c.y.unit, 3) +
+                ", which sizes B_c = H(theta) sigma_c,crit / (rho_b g)."
+          : std::string("The curves do not cross (") + arching_label(nominal.jenike.outcome) + ").";
   return c;
 }
 
@@ -216,8 +231,8 @@ Chart emptying_chart(double content, double rate, const Band& total) {
 std::vector<Chart> hopper_charts(const Material& material, const Hopper& h, const HopperAssessment& a) {
   const HopperMaterial& m = a.material;
   const HopperEvaluation& nominal = a.nominal();
-  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern), flow_function_chart(m, a),
-                            rate_against_outlet(h, m, a.models, nominal),
+  std::vector<Chart> charts{outlet_against_angle(h, m, a.models, a.pattern),
+                            flow_function_chart(m, a), rate_against_outlet(h, m, a.models, nominal),
                             pattern_chart(h, m, a.pattern)};
   charts.push_back(stress_chart(h, m, nominal.johanson.bulk_density));
   const double length = h.is_wedge() ? *h.slot_length : 1.0;

@@ -36,7 +36,8 @@ std::vector<SnapshotEntry> snapshots_in(const std::vector<fs::path>& files) {
       all.push_back({file, group, f.double_attribute(group, "time")});
     }
   }
-  std::stable_sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.time < b.time; });
+  std::stable_sort(all.begin(), all.end(),
+                   [](const auto& a, const auto& b) { return a.time < b.time; });
   return all;
 }
 
@@ -48,8 +49,8 @@ std::vector<std::size_t> three_times(std::size_t count) {
 }
 
 std::string when(const std::vector<SnapshotEntry>& all, std::size_t k) {
-  return "t = " + format_quantity(all[k].time, "s", 4) + " (" + all[k].file.filename().string() + ", " +
-         all[k].group.substr(all[k].group.rfind('/') + 1) + ")";
+  return "t = " + format_quantity(all[k].time, "s", 4) + " (" + all[k].file.filename().string() +
+         ", " + all[k].group.substr(all[k].group.rfind('/') + 1) + ")";
 }
 
 render::SnapshotOptions picture_options(const std::string& quantity, const std::string& unit) {
@@ -72,9 +73,10 @@ render::Vec3 front_view(double x, double y, double z) { return {x, z, -y}; }
 
 void add_outline(const SceneOutline& outline, bool dem_frame, render::Scene& scene) {
   for (const auto& s : outline)
-    scene.segments.push_back(dem_frame ? render::WallSegment{front_view(s.a.x(), s.a.y(), s.a.z()),
-                                                             front_view(s.b.x(), s.b.y(), s.b.z())}
-                                       : render::WallSegment{{s.a.x(), s.a.y(), s.a.z()}, {s.b.x(), s.b.y(), s.b.z()}});
+    scene.segments.push_back(
+        dem_frame ? render::WallSegment{front_view(s.a.x(), s.a.y(), s.a.z()),
+                                        front_view(s.b.x(), s.b.y(), s.b.z())}
+                  : render::WallSegment{{s.a.x(), s.a.y(), s.a.z()}, {s.b.x(), s.b.y(), s.b.z()}});
 }
 
 // The q-quantile of `values` (0 when empty).
@@ -134,17 +136,19 @@ std::vector<ReportImage> particle_pictures(const std::vector<fs::path>& files) {
     auto by_speed = picture_options("speed", "m/s");
     by_speed.value_lo = 0.0;
     by_speed.value_hi = top_speed;
-    speed_pictures.push_back(picture(renderer, scene, by_speed,
-                                     "DEM particles coloured by speed at " + when(all, picked[n]) + ", " + count +
-                                         "; colour scale 0-" + format_quantity(top_speed, "m/s", 3) +
-                                         " (the 99th percentile; faster grains at its top colour)."));
+    speed_pictures.push_back(
+        picture(renderer, scene, by_speed,
+                "DEM particles coloured by speed at " + when(all, picked[n]) + ", " + count +
+                    "; colour scale 0-" + format_quantity(top_speed, "m/s", 3) +
+                    " (the 99th percentile; faster grains at its top colour)."));
     if (layers.size() > 1) {  // a scene that marks no layers has nothing to show this way
       auto by_layer = picture_options("initial layer", "");
       by_layer.colouring = render::ParticleColouring::by_layer;
-      layer_pictures.push_back(picture(renderer, scene, by_layer,
-                                       "DEM particles coloured by the layer they started in at " +
-                                           when(all, picked[n]) + ": bands that stay level mean the whole bed "
-                                           "moves (mass flow); bands pulled down in the middle only, funnel flow."));
+      layer_pictures.push_back(
+          picture(renderer, scene, by_layer,
+                  "DEM particles coloured by the layer they started in at " + when(all, picked[n]) +
+                      ": bands that stay level mean the whole bed "
+                      "moves (mass flow); bands pulled down in the middle only, funnel flow."));
     }
   }
   speed_pictures.insert(speed_pictures.end(), layer_pictures.begin(), layer_pictures.end());
@@ -173,11 +177,13 @@ std::vector<ReportImage> field_pictures(const fs::path& file) {
     shots.push_back(cel::read_cel_field_snapshot(file, all[k].group));
     const auto& v = shots.back().velocity;
     for (std::size_t c = 0; c < shots.back().volume_fraction.size(); ++c)
-      if (shots.back().volume_fraction[c] >= 0.5) top_speed = std::max(top_speed, std::hypot(v[3 * c], v[3 * c + 1]));
+      if (shots.back().volume_fraction[c] >= 0.5)
+        top_speed = std::max(top_speed, std::hypot(v[3 * c], v[3 * c + 1]));
   }
   if (!(top_speed > 0.0)) top_speed = 1e-3;
-  const std::string surface = "; cells less than half full are not drawn, the line is the free surface "
-                              "(volume fraction 0.5).";
+  const std::string surface =
+      "; cells less than half full are not drawn, the line is the free surface "
+      "(volume fraction 0.5).";
 
   render::SnapshotRenderer renderer;
   std::vector<ReportImage> out;
@@ -190,7 +196,8 @@ std::vector<ReportImage> field_pictures(const fs::path& file) {
   for (std::size_t n = 0; n < shots.size(); ++n) {
     const auto& s = shots[n];
     std::vector<double> speed(s.volume_fraction.size());
-    for (std::size_t c = 0; c < speed.size(); ++c) speed[c] = std::hypot(s.velocity[3 * c], s.velocity[3 * c + 1]);
+    for (std::size_t c = 0; c < speed.size(); ++c)
+      speed[c] = std::hypot(s.velocity[3 * c], s.velocity[3 * c + 1]);
     auto o = picture_options("speed", "m/s");
     o.value_lo = 0.0;
     o.value_hi = top_speed;
@@ -201,7 +208,8 @@ std::vector<ReportImage> field_pictures(const fs::path& file) {
   const auto& last = shots.back();
   std::vector<double> stress_kpa(last.pressure.size());
   for (std::size_t c = 0; c < stress_kpa.size(); ++c) stress_kpa[c] = last.pressure[c] / 1e3;
-  out.push_back(picture(renderer, scene_of(last, last.density), picture_options("bulk density", "kg/m^3"),
+  out.push_back(picture(renderer, scene_of(last, last.density),
+                        picture_options("bulk density", "kg/m^3"),
                         "CEL bulk density (stress-dependent, through the void ratio) at " +
                             when(all, picked.back()) + surface));
   out.push_back(picture(renderer, scene_of(last, stress_kpa), picture_options("mean stress", "kPa"),
@@ -218,13 +226,15 @@ std::vector<ReportImage> simulation_pictures(const fs::path& run_folder) {
     std::vector<fs::path> continued;  // particles_from_step_<N>.h5 of restarted runs
     for (const auto& e : fs::directory_iterator(run_folder, ec)) {
       const std::string name = e.path().filename().string();
-      if (name.starts_with("particles_from_step_") && name.ends_with(".h5")) continued.push_back(e.path());
+      if (name.starts_with("particles_from_step_") && name.ends_with(".h5"))
+        continued.push_back(e.path());
     }
     std::sort(continued.begin(), continued.end());
     files.insert(files.end(), continued.begin(), continued.end());
     return particle_pictures(files);
   }
-  if (fs::is_regular_file(run_folder / "fields.h5", ec)) return field_pictures(run_folder / "fields.h5");
+  if (fs::is_regular_file(run_folder / "fields.h5", ec))
+    return field_pictures(run_folder / "fields.h5");
   return {};
 }
 
@@ -237,8 +247,8 @@ std::vector<ReportImage> record_pictures(const DesignRecord& record, const fs::p
     try {
       for (auto& p : simulation_pictures(run)) pictures.push_back(std::move(p));
     } catch (const std::runtime_error& e) {
-      warnings << "feedflow: warning: the report has no pictures of the run in " << run.string() << ": " << e.what()
-               << '\n';
+      warnings << "feedflow: warning: the report has no pictures of the run in " << run.string()
+               << ": " << e.what() << '\n';
     }
   }
   return pictures;

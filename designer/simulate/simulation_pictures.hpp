@@ -21,7 +21,8 @@ std::vector<ReportImage> simulation_pictures(const std::filesystem::path& run_fo
 // The pictures of every run a record names (DesignRecord::simulation_runs, relative to
 // `results_folder`, where its results file is or will be); a run whose snapshots cannot be
 // drawn is named in a warning on `warnings` and left out.
-std::vector<ReportImage> record_pictures(const DesignRecord& record, const std::filesystem::path& results_folder,
+std::vector<ReportImage> record_pictures(const DesignRecord& record,
+                                         const std::filesystem::path& results_folder,
                                          std::ostream& warnings);
 
 }  // namespace feedflow

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <utility>
 #include <sstream>
+#include <utility>
 
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/common/scene_outline.hpp"
@@ -152,13 +152,15 @@ void CelFieldSnapshots::write_sidecar(const PlaneStrainGrid& g) const {
   write_file_atomically(sidecar(), s.str());
 }
 
-CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file, const std::string& group) {
+CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file,
+                                         const std::string& group) {
   const Hdf5File f(hdf5_file, Hdf5File::Mode::read);
   CelFieldSnapshot s;
   try {
     s.cell_size = f.double_attribute("/", "cell_size");
   } catch (const std::runtime_error&) {
-    throw std::runtime_error(hdf5_file.string() + " holds no grid geometry (written by a feedflow before "
+    throw std::runtime_error(hdf5_file.string() +
+                             " holds no grid geometry (written by a feedflow before "
                              "snapshot files kept it)");
   }
   s.origin_x = f.double_attribute("/", "origin_x");
@@ -167,7 +169,8 @@ CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file,
   s.ny = static_cast<int>(f.integer_attribute("/", "ny"));
   s.time = f.double_attribute(group, "time");
   s.step = static_cast<long>(f.integer_attribute(group, "step"));
-  const std::vector<std::size_t> dims = {static_cast<std::size_t>(s.ny), static_cast<std::size_t>(s.nx)};
+  const std::vector<std::size_t> dims = {static_cast<std::size_t>(s.ny),
+                                         static_cast<std::size_t>(s.nx)};
   s.density = f.read<double>(group + "/density", dims);
   s.volume_fraction = f.read<double>(group + "/volume_fraction", dims);
   s.pressure = f.read<double>(group + "/pressure", dims);

@@ -1,7 +1,7 @@
 #pragma once
 // HDF5 snapshots of the CEL fields, one group /snapshots/step_<step> per snapshot (time, step;
-// per cell density, volume fraction, velocity (mean of the corner nodes; x, y, 0), pressure -tr T/3 and
-// void ratio, with their units), and an XDMF sidecar (same stem, .xdmf) with one 2DCoRectMesh
+// per cell density, volume fraction, velocity (mean of the corner nodes; x, y, 0), pressure -tr T/3
+// and void ratio, with their units), and an XDMF sidecar (same stem, .xdmf) with one 2DCoRectMesh
 // grid per time and cell-centred attributes, which ParaView opens. The HDF5 file is closed
 // after each snapshot and the sidecar rewritten atomically, so a stopped run leaves both
 // readable. Appending to an existing file continues it (restart). The first snapshot also writes
@@ -43,10 +43,11 @@ struct CelFieldSnapshot {
   int nx = 0, ny = 0;
   std::vector<double> density, volume_fraction, pressure, void_ratio;
   std::vector<double> velocity;  // 3 per cell (x, y, 0)
-  SceneOutline outline;           // the walls present at this time
+  SceneOutline outline;          // the walls present at this time
 };
 // Throws std::runtime_error naming the file when it lacks the grid (written before it was kept)
 // or the group.
-CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file, const std::string& group);
+CelFieldSnapshot read_cel_field_snapshot(const std::filesystem::path& hdf5_file,
+                                         const std::string& group);
 
 }  // namespace feedflow::cel

@@ -9,8 +9,8 @@
 
 namespace feedflow {
 
-SceneOutline circle_outline(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, double radius,
-                            int segments) {
+SceneOutline circle_outline(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis,
+                            double radius, int segments) {
   const Eigen::Vector3d n = axis.normalized(), u = n.unitOrthogonal(), v = n.cross(u);
   auto at = [&](int k) {
     const double phi = 2.0 * std::numbers::pi * k / segments;
@@ -24,7 +24,8 @@ SceneOutline circle_outline(const Eigen::Vector3d& centre, const Eigen::Vector3d
 void write_outline(Hdf5File& file, const std::string& path, const SceneOutline& outline) {
   if (outline.empty()) return;
   std::vector<double> points;
-  for (const auto& s : outline) points.insert(points.end(), {s.a.x(), s.a.y(), s.a.z(), s.b.x(), s.b.y(), s.b.z()});
+  for (const auto& s : outline)
+    points.insert(points.end(), {s.a.x(), s.a.y(), s.a.z(), s.b.x(), s.b.y(), s.b.z()});
   file.write(path, points, {outline.size(), 6}, "m");
 }
 

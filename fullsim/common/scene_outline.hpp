@@ -20,8 +20,8 @@ struct OutlineSegment {
 using SceneOutline = std::vector<OutlineSegment>;
 
 // A circle of `segments` chords around `centre` in the plane normal to `axis`.
-SceneOutline circle_outline(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, double radius,
-                            int segments = 96);
+SceneOutline circle_outline(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis,
+                            double radius, int segments = 96);
 
 // Writes the dataset `path` (n x 6: the two end points of each segment [m]; nothing when empty).
 void write_outline(Hdf5File& file, const std::string& path, const SceneOutline& outline);

@@ -51,7 +51,7 @@ struct Finding {
   std::optional<double> high = {};
   std::optional<double> limit = {};
   std::string unit = {};                     // of value, low, high and limit
-  std::string display_unit = {};             // unit people read them in (the estimate's); empty = unit
+  std::string display_unit = {};  // unit people read them in (the estimate's); empty = unit
 };
 
 struct Verdict {
@@ -63,10 +63,11 @@ struct Verdict {
 // How a simulation spent its time: the performance block that ends the run (LAMMPS-style): wall
 // time, throughput figures as text with their units, and the time of each phase.
 struct PerformanceBlock {
-  std::string title;                                     // "DEM run", "CEL run"
+  std::string title;  // "DEM run", "CEL run"
   double wall_seconds = 0.0;
-  std::vector<std::pair<std::string, std::string>> figures = {};  // "throughput" -> "1.2e6 particle-steps/s"
-  std::vector<std::pair<std::string, double>> phases = {};        // "pairs" -> seconds
+  std::vector<std::pair<std::string, std::string>> figures =
+      {};  // "throughput" -> "1.2e6 particle-steps/s"
+  std::vector<std::pair<std::string, double>> phases = {};  // "pairs" -> seconds
 };
 
 struct DesignRecord {

@@ -123,8 +123,10 @@ ReportContent design_report_content(const DesignRecord& r, const std::vector<Rep
 
   for (const auto& block : r.performance) {
     c.blocks.push_back(ReportHeading{"Performance: " + block.title});
-    ReportTable t{{"Figure or phase", "Value or time", "Share of the wall time"}, {}, {0.4, 0.4, 0.2}};
-    for (const auto& [name, value, share] : performance_rows(block)) t.rows.push_back({name, value, share});
+    ReportTable t{
+        {"Figure or phase", "Value or time", "Share of the wall time"}, {}, {0.4, 0.4, 0.2}};
+    for (const auto& [name, value, share] : performance_rows(block))
+      t.rows.push_back({name, value, share});
     c.blocks.push_back(std::move(t));
   }
   add_material_sheet(c, r);

@@ -74,7 +74,8 @@ TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
   ASSERT_EQ(reported.exit_code, 0) << reported.err;
   const auto saved = nlohmann::json::parse(slurp(dir / "out/pilot_hopper/results.json"));
   ASSERT_EQ(saved["provenance"]["simulation_runs"].size(), 1u);
-  EXPECT_TRUE(saved["provenance"]["simulation_runs"][0].get<std::string>().starts_with("../pilot_hopper_verify/"));
+  EXPECT_TRUE(saved["provenance"]["simulation_runs"][0].get<std::string>().starts_with(
+      "../pilot_hopper_verify/"));
   const std::string text = pdf_text(dir / "out/pilot_hopper/report.pdf");
   EXPECT_NE(text.find("CEL material speed at t ="), std::string::npos) << text;
   EXPECT_NE(text.find("CEL mean stress"), std::string::npos);

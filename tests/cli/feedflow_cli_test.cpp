@@ -158,16 +158,21 @@ TEST_F(FeedflowCli, HelpAndVersion) {
 // the same as with the target written in kg/s (5 t/h = 1.3889 kg/s).
 TEST_F(FeedflowCli, ThroughputWrittenInTonnesPerHourIsReportedSo) {
   const auto r = run_feedflow(
-      "design cases/pilot_hopper.toml --set \"design.required_throughput=5 t/h\" --set hopper.outlet_width=45mm --report --out th", dir_);
+      "design cases/pilot_hopper.toml --set \"design.required_throughput=5 t/h\" --set "
+      "hopper.outlet_width=45mm --report --out th",
+      dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* text : {"required throughput       5 t/h", "mass flow rate                 >= 5 t/h"})
+  for (const char* text :
+       {"required throughput       5 t/h", "mass flow rate                 >= 5 t/h"})
     EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
   const auto json = nlohmann::json::parse(slurp(dir_ / "th/results.json"));
   const auto& rate = json.at("results").at("mass_flow_rate");
   EXPECT_EQ(rate.at("unit"), "kg/s");
   EXPECT_EQ(rate.at("display_unit"), "t/h");
-  const auto si = run_feedflow("design cases/pilot_hopper.toml --set design.required_throughput=1.3889kg/s "
-                               "--set hopper.outlet_width=45mm --json - -q", dir_);
+  const auto si = run_feedflow(
+      "design cases/pilot_hopper.toml --set design.required_throughput=1.3889kg/s "
+      "--set hopper.outlet_width=45mm --json - -q",
+      dir_);
   const auto plain = nlohmann::json::parse(si.out);
   EXPECT_EQ(plain.at("results").at("mass_flow_rate").at("value"), rate.at("value"));
   EXPECT_FALSE(plain.at("results").at("mass_flow_rate").contains("display_unit"));

@@ -71,7 +71,8 @@ inline std::string command_output(const std::string& command) {
 
 // The text of a PDF (pdftotext; `layout` keeps the columns of tables).
 inline std::string pdf_text(const std::filesystem::path& pdf, bool layout = false) {
-  return command_output(std::string("pdftotext ") + (layout ? "-layout '" : "'") + pdf.string() + "' -");
+  return command_output(std::string("pdftotext ") + (layout ? "-layout '" : "'") + pdf.string() +
+                        "' -");
 }
 
 }  // namespace feedflow::testing

@@ -25,7 +25,8 @@ namespace {
 int images_of_size(const fs::path& pdf, int width, int height) {
   const std::string list = command_output("pdfimages -list '" + pdf.string() + "'");
   const std::regex row("image +" + std::to_string(width) + " +" + std::to_string(height) + " ");
-  return static_cast<int>(std::distance(std::sregex_iterator(list.begin(), list.end(), row), std::sregex_iterator()));
+  return static_cast<int>(
+      std::distance(std::sregex_iterator(list.begin(), list.end(), row), std::sregex_iterator()));
 }
 
 int count(const std::string& text, const std::string& what) {
@@ -47,9 +48,10 @@ class SimulationReport : public ::testing::Test {
 // the snapshot and the cell size; results.json names the run's folder; `feedflow report` from
 // another folder draws the same five pictures again.
 TEST_F(SimulationReport, CelHopperReportShowsItsFieldsAndIsRedrawn) {
-  const auto r = run_feedflow("simulate cases/pilot_hopper.toml --solver cel --time 0.15s -q --report "
-                              "--set hopper.outlet_width=120mm --set cel.cell_size=20mm --out run",
-                              dir_);
+  const auto r = run_feedflow(
+      "simulate cases/pilot_hopper.toml --solver cel --time 0.15s -q --report "
+      "--set hopper.outlet_width=120mm --set cel.cell_size=20mm --out run",
+      dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 5);
   const std::string text = pdf_text(dir_ / "run/report.pdf");
@@ -61,9 +63,11 @@ TEST_F(SimulationReport, CelHopperReportShowsItsFieldsAndIsRedrawn) {
   EXPECT_EQ(json.at("provenance").at("simulation_runs"), nlohmann::json::array({"."}));
   // The run's performance block: its throughput, and phases that add up to no more than the run.
   const auto& performance = json.at("performance").at(0);
-  EXPECT_NE(performance.at("figures").at("throughput").get<std::string>().find("cell updates/s"), std::string::npos);
+  EXPECT_NE(performance.at("figures").at("throughput").get<std::string>().find("cell updates/s"),
+            std::string::npos);
   double phases = 0.0;
-  for (const auto& [name, seconds] : performance.at("phases_s").items()) phases += seconds.get<double>();
+  for (const auto& [name, seconds] : performance.at("phases_s").items())
+    phases += seconds.get<double>();
   EXPECT_GT(phases, 0.5 * performance.at("wall_s").get<double>());
   EXPECT_LE(phases, performance.at("wall_s").get<double>() * (1 + 1e-9));
   EXPECT_LE(performance.at("wall_s").get<double>(), json.at("timing").at("wall_s").get<double>());
@@ -79,15 +83,17 @@ TEST_F(SimulationReport, CelHopperReportShowsItsFieldsAndIsRedrawn) {
 // speed; the snapshot file keeps the shell's outline, a circle of the drum's radius (145 mm
 // drum) around its axis, so the picture draws the shell.
 TEST_F(SimulationReport, DemDrumReportShowsTheParticlesInTheirShell) {
-  const auto r = run_feedflow("simulate cases/rotating_drum_20rpm.toml --solver dem -q --time 0.2s --report"
-                              " --set dem.slab_depth=18mm --set dem.normal_law=hertz"
-                              " --set material.dem.particle.radius=3mm --out run",
-                              dir_);
+  const auto r = run_feedflow(
+      "simulate cases/rotating_drum_20rpm.toml --solver dem -q --time 0.2s --report"
+      " --set dem.slab_depth=18mm --set dem.normal_law=hertz"
+      " --set material.dem.particle.radius=3mm --out run",
+      dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 3);
   const std::string text = pdf_text(dir_ / "run/report.pdf");
   EXPECT_EQ(count(text, "DEM particles coloured by speed at t ="), 3) << text;
-  EXPECT_NE(text.find("particle-steps/s"), std::string::npos) << "the performance block is in the report";
+  EXPECT_NE(text.find("particle-steps/s"), std::string::npos)
+      << "the performance block is in the report";
   const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
   for (const char* phase : {"pairs", "neighbours", "walls", "integration"})
     EXPECT_GT(json.at("performance").at(0).at("phases_s").at(phase).get<double>(), 0.0) << phase;
@@ -101,8 +107,10 @@ TEST_F(SimulationReport, DemDrumReportShowsTheParticlesInTheirShell) {
 // are of snapshots that hold particles (none of the emptied hopper), by speed and by the layer
 // each particle started in (the flow pattern), at the same three times.
 TEST_F(SimulationReport, DemHopperReportShowsSpeedAndLayers) {
-  fs::copy_file(fs::path(FEEDFLOW_SOURCE_DIR) / "tests/data/dem_hopper_twin.toml", dir_ / "twin.toml");
-  const auto r = run_feedflow("simulate twin.toml --solver dem --time 0.5s --out run -q --report", dir_);
+  fs::copy_file(fs::path(FEEDFLOW_SOURCE_DIR) / "tests/data/dem_hopper_twin.toml",
+                dir_ / "twin.toml");
+  const auto r =
+      run_feedflow("simulate twin.toml --solver dem --time 0.5s --out run -q --report", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(images_of_size(dir_ / "run/report.pdf", 1000, 600), 6);
   const std::string text = pdf_text(dir_ / "run/report.pdf");

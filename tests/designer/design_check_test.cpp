@@ -70,7 +70,8 @@ TEST(HopperCheck, BandsContainTheirValues) {
 // and the material is stronger than the line below it, weaker above it.
 TEST(HopperCheck, FlowFunctionChartMarksTheCriticalPoint) {
   const DesignRecord r = check("cases/pilot_hopper.toml");
-  const auto chart = std::find_if(r.charts.begin(), r.charts.end(), [](const Chart& c) { return c.id == "flow_function"; });
+  const auto chart = std::find_if(r.charts.begin(), r.charts.end(),
+                                  [](const Chart& c) { return c.id == "flow_function"; });
   ASSERT_NE(chart, r.charts.end());
   const auto point = std::find_if(chart->series.begin(), chart->series.end(),
                                   [](const ChartSeries& s) { return s.label == "critical point"; });
@@ -86,8 +87,9 @@ TEST(HopperCheck, FlowFunctionChartMarksTheCriticalPoint) {
   };
   const ChartSeries ff = line("flow function linear"), factor = line("flow-factor line");
   EXPECT_LT(ff.y.front(), ff.y.back());
-  EXPECT_GT(ff.y.front(), factor.y.front());  // the material is stronger than the arch's stress at low stress
-  EXPECT_LT(ff.y.back(), factor.y.back());    // and weaker at three times the critical stress
+  EXPECT_GT(ff.y.front(),
+            factor.y.front());  // the material is stronger than the arch's stress at low stress
+  EXPECT_LT(ff.y.back(), factor.y.back());  // and weaker at three times the critical stress
 }
 
 // Seed Fig. 3: the critical outlet width rises with the semi-angle.

@@ -49,8 +49,12 @@ TEST(ResultsJson, SimulationProvenanceUnitsAndPerformanceRoundTrip) {
   DesignRecord a = sample();
   a.simulation_runs = {".", "../verify/run_6"};
   a.results[0].second.display_unit = "in";
-  a.verdict.findings = {{VerdictStatus::pass, "mass_flow_rate", "5 t/h", 2.0, 1.5, 2.5, 1.3889, "kg/s", "t/h"}};
-  a.performance = {{"DEM run", 10.0, {{"throughput", "1.2e+06 particle-steps/s"}}, {{"pairs", 6.0}, {"walls", 2.5}}}};
+  a.verdict.findings = {
+      {VerdictStatus::pass, "mass_flow_rate", "5 t/h", 2.0, 1.5, 2.5, 1.3889, "kg/s", "t/h"}};
+  a.performance = {{"DEM run",
+                    10.0,
+                    {{"throughput", "1.2e+06 particle-steps/s"}},
+                    {{"pairs", 6.0}, {"walls", 2.5}}}};
   const DesignRecord b = design_record_from_json(nlohmann::ordered_json::parse(to_json(a).dump()));
   EXPECT_EQ(b.simulation_runs, a.simulation_runs);
   EXPECT_EQ(b.results[0].second.display_unit, "in");
@@ -61,10 +65,12 @@ TEST(ResultsJson, SimulationProvenanceUnitsAndPerformanceRoundTrip) {
   EXPECT_EQ(b.performance[0].figures, a.performance[0].figures);
   EXPECT_EQ(b.performance[0].phases, a.performance[0].phases);
   const std::string text = text_summary(b);
-  for (const char* line : {"Performance: DEM run", "1.2e+06 particle-steps/s", "phase: pairs", "60 %", "phase: other",
-                           "15 %", "mass flow rate"})
+  for (const char* line : {"Performance: DEM run", "1.2e+06 particle-steps/s", "phase: pairs",
+                           "60 %", "phase: other", "15 %", "mass flow rate"})
     EXPECT_NE(text.find(line), std::string::npos) << line << "\n" << text;
-  EXPECT_NE(text.find(">= 5 t/h"), std::string::npos) << "the margin table reads the finding's display unit\n" << text;
+  EXPECT_NE(text.find(">= 5 t/h"), std::string::npos)
+      << "the margin table reads the finding's display unit\n"
+      << text;
 }
 
 // Writing and reading back gives the same record, results in the same order, inputs shown as a

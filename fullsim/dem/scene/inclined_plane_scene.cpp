@@ -78,7 +78,8 @@ void InclinedPlaneScene::add_meshes(DemEngine& e) const {
   n = 0;
   add_strip(gate, Vec3(0, 0, spec_.gate_opening), Vec3(0, 0, spec_.bin_height + 4.0 * r), depth, n);
   e.add_mesh_wall(MeshWall("lifted gate", std::move(gate)));
-  // For pictures: the bin (back wall and floor), the lifted gate and the ramp, in the plane's frame.
+  // For pictures: the bin (back wall and floor), the lifted gate and the ramp, in the plane's
+  // frame.
   const double y = 0.5 * depth, top = spec_.bin_height + 4.0 * r;
   e.set_outline({{Vec3(-spec_.bin_length, y, top), Vec3(-spec_.bin_length, y, 0.0)},
                  {Vec3(-spec_.bin_length, y, 0.0), Vec3(spec_.ramp_length, y, 0.0)},

@@ -252,11 +252,12 @@ TEST(CelFieldSnapshots, KeepTheGridAndTheWallsPresent) {
   const double tol = 1e-9, w = g.cell_size * g.nx, h = g.cell_size * g.ny;
   for (const auto& s : before.outline)
     for (const auto& p : {s.a, s.b}) {
-      EXPECT_TRUE(p.x() >= g.origin.x() - tol && p.x() <= g.origin.x() + w + tol && p.y() >= g.origin.y() - tol &&
-                  p.y() <= g.origin.y() + h + tol);
+      EXPECT_TRUE(p.x() >= g.origin.x() - tol && p.x() <= g.origin.x() + w + tol &&
+                  p.y() >= g.origin.y() - tol && p.y() <= g.origin.y() + h + tol);
       double nearest = 1e9;
       for (const auto& wall : run.solver().options().rigid_walls)
-        nearest = std::min(nearest, std::abs(PlacedWall(wall, 0.0).signed_distance({p.x(), p.y()})));
+        nearest =
+            std::min(nearest, std::abs(PlacedWall(wall, 0.0).signed_distance({p.x(), p.y()})));
       EXPECT_LT(nearest, 1e-9) << "segment end (" << p.x() << ", " << p.y() << ") is on no wall";
     }
   std::filesystem::remove(file);
