@@ -15,6 +15,7 @@
 #include "designer/cli/report_files.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/simulate/simulation_pictures.hpp"
+#include "designer/verify/arching_verification.hpp"
 #include "designer/verify/rate_verification.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
@@ -34,6 +35,7 @@ struct DesignArguments {
   std::string verify = "off";       // off | auto | cel | dem
   std::string budget = "10 min";
   std::string tolerance = "10%";
+  std::string width_tolerance = "1 mm";
 };
 
 double parsed(const std::string& text, const Dimension& d, const char* flag, const char* example) {
@@ -52,14 +54,41 @@ bool marginal_on(const DesignRecord& r, const std::string& quantity) {
   return false;
 }
 
+// --verify dem on a hopper: arching at the design outlet and the arching width by bisection on
+// the particle rung. Returns false when Ctrl-C stopped the runs.
+bool dem_verification(const DesignArguments& args, const Case& c, const Hopper& h,
+                      const std::filesystem::path& runs, DesignRecord& record) {
+  const double width_tolerance =
+      parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm");
+  const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
+  const ArchingVerificationPlan plan = plan_arching_verification(c, record, width_tolerance);
+  install_interrupt_handler();
+  const ArchingVerification v =
+      verify_arching(args.case_file, args.options.sets, h, plan, budget, runs,
+                     args.options.human_output() ? &std::cout : nullptr);
+  if (v.status == "interrupted") {
+    std::cerr
+        << "feedflow: interrupted; run the same command again to continue (runs made are kept in "
+        << runs.string() << ")\n";
+    return false;
+  }
+  apply_arching_verification(c, plan, v, record);
+  if (v.at_design)
+    record.simulation_runs.push_back(std::filesystem::absolute(v.design_run).string());
+  return true;
+}
+
 // --verify: the hopper's rate on the continuum rung when asked (cel) or when its decision is
-// inside its band (auto); without --verify, a MARGINAL says what would settle it.
-// Returns false when Ctrl-C stopped the runs.
+// inside its band (auto), its arching on the particle rung (dem); without --verify, a MARGINAL
+// says what would settle it. Returns false when Ctrl-C stopped the runs.
 bool verification(const DesignArguments& args, const Case& c, const std::filesystem::path& runs, DesignRecord& record) {
   const Hopper* h = std::get_if<Hopper>(&c.equipment);
-  if (args.verify == "dem")
-    throw NotAvailable("--verify dem: the particle rung cannot yet verify a design in place; run `feedflow simulate " +
-                       args.case_file + " --solver dem`");
+  if (args.verify == "dem" && !h)
+    throw NotAvailable(
+        "--verify dem: the particle rung verifies hoppers in place so far; run `feedflow "
+        "simulate " +
+        args.case_file + " --solver dem`");
+  if (args.verify == "dem") return dem_verification(args, c, *h, runs, record);
   if (!h) {
     if (args.verify != "off")
       record.verdict.reasons.push_back("not verified: design --verify covers hopper discharge so far; run `feedflow "
@@ -69,10 +98,16 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
   const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
   const bool rate_marginal = marginal_on(record, "mass_flow_rate");
-  if (marginal_on(record, "critical_outlet_width"))
+  if (marginal_on(record, "critical_outlet_width") ||
+      marginal_on(record, "mechanical_arching_width"))
     record.verdict.reasons.push_back(
-        "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and cannot arch; the "
-        "particle rung with the seed's law (K_nc cohesion) can: feedflow simulate " + args.case_file + " --solver dem");
+        "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and "
+        "cannot arch; the "
+        "particle rung can (interlocking arches with any law, cohesive ones with the seed's K_nc): "
+        "feedflow design " +
+        args.case_file +
+        " --verify dem (a DEM run at the outlet, then a bisection on the width to " +
+        args.width_tolerance + ")");
   const bool wanted = args.verify == "cel" || (args.verify == "auto" && rate_marginal);
   if (!wanted) {
     if (rate_marginal) {
@@ -166,9 +201,13 @@ void add_design_command(CLI::App& app, int& exit_code) {
   add_case_options(*command, args->options,
                    "out/<case name>; none with --json - unless --report asks for one");
   command->add_flag("--report", args->report, "also write report.pdf and report.html");
-  command->add_option("--verify", args->verify,
-                      "verify on a full rung: auto (the quantities whose decision is inside their band), cel "
-                      "(the hopper's discharge rate on the continuum rung), dem, off")
+  command
+      ->add_option(
+          "--verify", args->verify,
+          "verify on a full rung: auto (the quantities whose decision is inside their band), cel "
+          "(the hopper's discharge rate on the continuum rung), dem (its arching on the particle "
+          "rung: "
+          "at the outlet, and the critical width by bisection), off")
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "auto", "cel", "dem"}))
       ->type_name("RUNG");
@@ -178,6 +217,11 @@ void add_design_command(CLI::App& app, int& exit_code) {
   command->add_option("--tolerance", args->tolerance, "error bar a verification must reach")
       ->capture_default_str()
       ->type_name("FRACTION");
+  command
+      ->add_option("--width-tolerance", args->width_tolerance,
+                   "--verify dem: width of the bracket the bisection on the outlet width stops at")
+      ->capture_default_str()
+      ->type_name("WIDTH");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";

@@ -9,8 +9,7 @@
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/measured_bench.hpp"
 #include "designer/calibrate/calibration_design.hpp"
-#include "designer/design/judge.hpp"
-#include "designer/design/verdict_builder.hpp"
+#include "designer/verify/rejudge.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/quantity_format.hpp"
 #include "reports/result_format.hpp"
@@ -165,12 +164,7 @@ void apply_rate_verification(const Case& c, const RateVerification& v, DesignRec
                               format_number(reduced.high.value_or(value), 4) + "), CEL " +
                               format_number(*v.reference.value, 4) + " +- " +
                               format_number(v.reference.error_bar.value_or(0.0), 3) + " kg/s";
-  // Judged again on the CEL rate; the design check's notes (no status) are kept.
-  VerdictBuilder rejudged;
-  for (auto& f : judge(c, record.results).findings) rejudged.add(std::move(f));
-  for (const auto& f : record.verdict.findings)
-    if (!f.status) rejudged.add(f);
-  record.verdict = rejudged.verdict();
+  rejudge(c, record);  // on the CEL rate
   record.verdict.reasons.push_back(std::string(holds ? "mass flow rate verified" : "mass flow rate contradicted") +
                                    " on the continuum rung: " + numbers + " (" + v.reference.source + ", " +
                                    format_number(v.wall_seconds, 3) + " s of runs); the verdict is judged on the CEL rate");

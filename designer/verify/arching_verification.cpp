@@ -1,0 +1,221 @@
+#include "designer/verify/arching_verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "designer/bench/bench_run.hpp"
+#include "designer/verify/rejudge.hpp"
+#include "models/contact/contact_law_registry.hpp"
+#include "models/core/errors.hpp"
+#include "models/hopper/critical_outlet.hpp"
+#include "models/units/quantity_format.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+bool law_has_cohesion(const std::string& normal_law) {
+  return with_contact_law(choose_contact_law(normal_law), [](auto law) {
+    return decltype(law)::type::NormalPart::kHasCohesionBranch;
+  });
+}
+
+std::string mm(double metres) { return format_quantity(metres, "mm", 4); }
+
+// The DEM run of the case at outlet width `w` (the scene's own end: until it arches, empties or
+// its rate has converged) as a bench point, so a second call reads it back.
+BenchQuestion question_at(const std::string& case_file, const std::vector<std::string>& sets,
+                          double w) {
+  BenchQuestion q;
+  q.id = "verify_arching";
+  q.case_file = case_file;
+  q.sets = sets;
+  q.sets.push_back("hopper.outlet_width=" + millimetres_setting(w));
+  return q;
+}
+
+BenchPoint dem_point() {
+  BenchPoint p;
+  p.setting = "DEM";
+  p.rung = "L3";
+  p.quantity = "arching";
+  p.solver = Solver::dem;
+  return p;
+}
+
+std::optional<OutletOutcome> outcome_of(const BenchRun& run) {
+  if (!run.done() || !run.results.contains("arching") ||
+      !run.results["arching"]["value"].is_string())
+    return std::nullopt;
+  return run.results["arching"]["value"].get<std::string>() == "arched" ? OutletOutcome::arches
+                                                                        : OutletOutcome::flows;
+}
+
+std::string outcomes(const WidthBisection& b) {
+  std::string s;
+  for (const auto& step : b.steps)
+    s += (s.empty() ? "" : ", ") + mm(step.width) + " " + to_string(step.outcome);
+  return s;
+}
+
+// Puts `rung` in place of the record's `key` and keeps the reduced estimate beside it.
+void replace_beside(Estimates& results, const std::string& key, Estimate rung) {
+  const auto it =
+      std::find_if(results.begin(), results.end(), [&](const auto& r) { return r.first == key; });
+  if (it == results.end()) {
+    results.emplace_back(key, std::move(rung));
+    return;
+  }
+  Estimate reduced = it->second;
+  rung.display_unit = reduced.display_unit;
+  it->second = std::move(rung);
+  results.emplace(it + 1, reduced_model_key(key), std::move(reduced));
+}
+
+// Where the rung's width goes in the record: in place of the reduced one, unless the DEM's
+// spheres are not the material's grains (coarse-grained): then beside it, as the spheres' own.
+std::string result_key(const Case& c, const ArchingVerificationPlan& plan) {
+  if (plan.quantity != "mechanical_arching_width") return plan.quantity;
+  const double d90 = c.material.psd ? c.material.psd->d90 : 0.0;
+  return std::abs(plan.sphere_diameter - d90) <= 0.1 * d90 ? plan.quantity
+                                                           : "mechanical_arching_width_dem_spheres";
+}
+
+}  // namespace
+
+ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRecord& record,
+                                                  double tolerance) {
+  if (!(tolerance > 0.0))
+    throw InputError("--width-tolerance", "", "expected a positive width, e.g. 1 mm");
+  ArchingVerificationPlan plan;
+  plan.law = c.dem.normal_law.empty() ? std::string("hysteretic_nonlinear2") : c.dem.normal_law;
+  plan.tolerance = tolerance;
+  if (law_has_cohesion(plan.law)) {
+    plan.quantity = "critical_outlet_width";
+    const Estimate* band = find_estimate(record.results, plan.quantity);
+    if (!band || !band->is_number() || !band->low || !band->high || !(*band->high > *band->low))
+      throw InputError("--verify", "",
+                       "the design check gave no band of the critical outlet width to search");
+    const double per = band->unit == "mm" ? 1e-3 : 1.0;
+    plan.low = *band->low * per;
+    plan.high = *band->high * per;
+  } else {
+    // Interlocking arches form at (3-8) d of the grains that interlock: the DEM's spheres, which
+    // may be coarse-grained, not the material's d90.
+    if (!c.material.dem)
+      throw InputError("--verify", "", "the material has no [dem] table for the particle rung");
+    const auto rule = mechanical_arching_width(2.0 * c.material.dem->particle.radius);
+    plan.quantity = "mechanical_arching_width";
+    plan.sphere_diameter = 2.0 * c.material.dem->particle.radius;
+    plan.low = rule.low;
+    plan.high = rule.high;
+  }
+  plan.runs = 1 + bisection_runs(plan.low, plan.high, tolerance);
+  return plan;
+}
+
+ArchingVerification verify_arching(const std::string& case_file,
+                                   const std::vector<std::string>& sets, const Hopper& h,
+                                   const ArchingVerificationPlan& plan, double budget,
+                                   const std::filesystem::path& runs_folder,
+                                   std::ostream* progress) {
+  ArchingVerification v;
+  const auto judge_at = [&](double w) -> std::optional<OutletOutcome> {
+    if (progress) *progress << "verify: DEM at outlet " << mm(w) << " ..." << std::flush;
+    bool made = false;
+    const BenchQuestion q = question_at(case_file, sets, w);
+    const BenchRun run =
+        run_or_read_back(q, dem_point(), ".", bench_run_folder(runs_folder, q, dem_point()), made);
+    if (made) {
+      v.wall_seconds += run.wall_seconds;
+      v.longest_run = std::max(v.longest_run, run.wall_seconds);
+    }
+    const auto outcome = outcome_of(run);
+    if (progress)
+      *progress << ' ' << (outcome ? to_string(*outcome) : run.status) << " ("
+                << (made ? format_number(run.wall_seconds, 3) + " s" : std::string("read back"))
+                << ")\n";
+    if (!outcome) v.status = run.done() ? "the DEM run gave no arching answer" : run.status;
+    return outcome;
+  };
+  v.design_run =
+      bench_run_folder(runs_folder, question_at(case_file, sets, h.outlet_width), dem_point());
+  v.at_design = judge_at(h.outlet_width);
+  if (!v.at_design) return v;
+  const double needed = (plan.runs - 1) * v.longest_run;
+  if (needed > budget) {
+    v.status = "the bisection needs " + std::to_string(plan.runs - 1) + " more DEM runs of about " +
+               format_quantity(v.longest_run, v.longest_run < 60 ? "s" : "min", 2) + " each (" +
+               format_quantity(needed, "min", 2) + "), beyond the budget of " +
+               format_quantity(budget, "min", 2) +
+               "; runs made are kept and read back, so a larger --budget continues";
+    return v;
+  }
+  v.bisection = bisect_outlet_width(plan.low, plan.high, plan.tolerance, judge_at);
+  return v;
+}
+
+void apply_arching_verification(const Case& c, const ArchingVerificationPlan& plan,
+                                const ArchingVerification& v, DesignRecord& record) {
+  const std::string rung = "particle rung (DEM, " + plan.law + " law)";
+  const std::string runs = format_number(v.wall_seconds, 3) + " s of runs";
+  std::vector<std::string> notes;
+  if (v.at_design) {
+    Estimate observed;
+    observed.value =
+        *v.at_design == OutletOutcome::arches ? std::string("arched") : std::string("flowing");
+    observed.model = "DEM (" + plan.law + ") at the design outlet " +
+                     mm(std::get<Hopper>(c.equipment).outlet_width);
+    observed.rung = Rung::L3;
+    replace_beside(record.results, "arching", observed);
+  }
+  const WidthBisection& b = v.bisection;
+  const std::string what = quantity_label(plan.quantity);
+  const std::string band =
+      (plan.quantity == "critical_outlet_width" ? "the reduced band "
+                                                : "the rule's range 3 d .. 8 d = ") +
+      mm(plan.low) + " .. " + mm(plan.high);
+  if (!v.at_design || b.end == WidthBisection::End::stopped) {
+    notes.push_back(what + " not verified on the " + rung + ": " + v.status +
+                    (b.steps.empty() ? std::string() : " (runs so far: " + outcomes(b) + ")"));
+  } else if (b.end == WidthBisection::End::bracketed) {
+    Estimate width;
+    width.value = 0.5 * (b.arches_at + b.flows_at) / 1e-3;
+    width.low = b.arches_at / 1e-3;
+    width.high = b.flows_at / 1e-3;
+    width.unit = "mm";
+    width.model = "DEM (" + plan.law + ") bisection: arches at " + mm(b.arches_at) + ", flows at " +
+                  mm(b.flows_at);
+    width.rung = Rung::L3;
+    replace_beside(record.results, result_key(c, plan), width);
+    notes.push_back(what + " verified on the " + rung + ": it arches at " + mm(b.arches_at) +
+                    " and flows at " + mm(b.flows_at) + ", inside " + band + " (" +
+                    std::to_string(b.steps.size()) + " widths: " + outcomes(b) + "; " + runs +
+                    "); the verdict is judged on the DEM bracket");
+  } else {
+    const bool above = b.end == WidthBisection::End::arches_at_high_edge;
+    notes.push_back(what + " contradicted on the " + rung + ": it " +
+                    (above ? "arches at " + mm(plan.high) + ", so the width is above "
+                           : "flows at " + mm(plan.low) + ", so the width is below ") +
+                    band + " (" + runs + ")");
+  }
+  if (plan.quantity == "mechanical_arching_width")
+    notes.push_back(
+        "the DEM law " + plan.law +
+        " has no cohesion: its arches are interlocking ones, so it verifies "
+        "the interlocking rule (3-8) d on its " +
+        mm(plan.sphere_diameter) +
+        " spheres, searched between 3 d and 8 d, not the cohesive B_c (the seed's hysteretic law "
+        "with "
+        "K_nc can)" +
+        (result_key(c, plan) == plan.quantity
+             ? std::string()
+             : "; the spheres are not the material's grains (d90 " +
+                   (c.material.psd ? mm(c.material.psd->d90) : std::string("not given")) +
+                   "), so the material's own interlocking width stays the reduced one"));
+  rejudge(c, record);
+  for (auto& n : notes) record.verdict.reasons.push_back(std::move(n));
+}
+
+}  // namespace feedflow

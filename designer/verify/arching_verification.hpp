@@ -1,0 +1,65 @@
+#pragma once
+// Verifying a hopper's arching on the particle rung (L3), for `design --verify dem`: a DEM run at
+// the design outlet says whether it arches, and the critical width is found by bisection on the
+// outlet width (width_bisection.hpp) inside the reduced rung's band, each width a DEM run of the
+// case (flows or arches, as `feedflow simulate --solver dem` measures it). Which width the runs
+// verify depends on the contact law: one with a cohesion branch (the seed's hysteretic law, K_nc)
+// can form cohesive arches and verifies B_c inside the reduced band; a law without (Hertz, Hooke)
+// shows interlocking arches only and verifies the rule (3-8) d on the DEM's spheres (a
+// coarse-grained DEM's spheres are not the material's grains, so its width then stands beside
+// the material's reduced one instead of replacing it). Each width has its own wedge walls, so
+// its own fill: the fill cannot be reused between steps (it can only when the walls stay, as in
+// a restart of the same width, which reads the run back).
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "designer/case/case.hpp"
+#include "designer/verify/width_bisection.hpp"
+#include "models/core/design_record.hpp"
+
+namespace feedflow {
+
+struct ArchingVerificationPlan {
+  std::string quantity;  // "critical_outlet_width" (cohesive law) or "mechanical_arching_width"
+  std::string law;       // the DEM normal law's keyword
+  double low = 0.0,
+         high = 0.0;  // the band searched [m]: the reduced B_c band, or 3-8 sphere diameters
+  double sphere_diameter = 0.0;  // [m] of the DEM's spheres (interlocking)
+  double tolerance = 0.0;        // [m]
+  int runs = 0;                  // DEM runs: the design outlet, then the bisection's
+};
+
+// The plan for the case and the record of its design check; throws InputError naming
+// --width-tolerance when it is not positive, and when the record has no band to search.
+ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRecord& record,
+                                                  double tolerance);
+
+struct ArchingVerification {
+  std::optional<OutletOutcome> at_design;  // the design outlet's run
+  WidthBisection bisection;
+  std::string status = "done";       // or why it stopped
+  double wall_seconds = 0.0;         // of the runs made now
+  double longest_run = 0.0;          // [s] the slowest run made now
+  std::filesystem::path design_run;  // the design outlet's run folder
+};
+
+// Runs the plan below `runs_folder` (runs already there are read back). The design outlet's run
+// goes first; its wall time, times the bisection's runs, must fit `budget_seconds`, or the
+// bisection is not started and the status says what it would take.
+ArchingVerification verify_arching(const std::string& case_file,
+                                   const std::vector<std::string>& sets, const Hopper& hopper,
+                                   const ArchingVerificationPlan& plan, double budget_seconds,
+                                   const std::filesystem::path& runs_folder,
+                                   std::ostream* progress);
+
+// The record with the particle rung's answers in place of the reduced ones (kept beside them under
+// reduced_model_key): arching at the design outlet (observed), the plan's width as the bisection's
+// bracket; judged again; a note says verified (the rung's width inside the reduced band) or
+// contradicted (outside it, at the edge that showed it), with the numbers and the runs.
+void apply_arching_verification(const Case& c, const ArchingVerificationPlan& plan,
+                                const ArchingVerification& v, DesignRecord& record);
+
+}  // namespace feedflow

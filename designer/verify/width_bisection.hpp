@@ -1,0 +1,47 @@
+#pragma once
+// The narrowest outlet that flows, found by bisection on the outlet width with a full rung as the
+// judge of each width (it flows, or it arches), inside a band the reduced rung gives: the band's
+// top is judged first (an arch there puts the critical width above the band), then its bottom (a
+// flow there puts it below), then the bracket [arches, flows] is halved until it is narrower than
+// the tolerance: 2 + ceil(log2(band / tolerance)) runs. The judge is assumed monotone in the
+// width (narrower arches sooner); near the transition an arch is a chance event, so the bracket
+// is where the rung's answer changes in these runs, not a sharp limit.
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace feedflow {
+
+enum class OutletOutcome { flows, arches };
+const char* to_string(OutletOutcome outcome);
+
+struct BisectionStep {
+  double width = 0.0;  // [m]
+  OutletOutcome outcome = OutletOutcome::flows;
+};
+
+struct WidthBisection {
+  enum class End {
+    bracketed,            // arches_at < flows_at, narrower than the tolerance
+    flows_at_low_edge,    // the band's bottom flows: the critical width is below the band
+    arches_at_high_edge,  // the band's top arches: the critical width is above the band
+    stopped,              // the judge gave no answer (a run interrupted or failed)
+  };
+  End end = End::stopped;
+  double arches_at = std::numeric_limits<double>::quiet_NaN();  // widest width that arched [m]
+  double flows_at = std::numeric_limits<double>::quiet_NaN();   // narrowest width that flowed [m]
+  std::vector<BisectionStep> steps;                             // in the order they were judged
+};
+
+// `judge` answers for a width, or nothing when its run gave no answer (the bisection stops).
+// Throws std::invalid_argument unless 0 < low < high and tolerance > 0.
+WidthBisection bisect_outlet_width(
+    double low, double high, double tolerance,
+    const std::function<std::optional<OutletOutcome>(double)>& judge);
+
+// The number of judged widths a bisection of [low, high] to `tolerance` takes when it brackets.
+int bisection_runs(double low, double high, double tolerance);
+
+}  // namespace feedflow

@@ -1,0 +1,44 @@
+// The plan of an arching verification on the particle rung (designer/verify/arching_verification):
+// the contact law decides what the DEM can verify, and the band it searches.
+#include <gtest/gtest.h>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/design/design_check.hpp"
+#include "designer/verify/arching_verification.hpp"
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+ArchingVerificationPlan plan_for(const std::vector<SetOverride>& sets, double tolerance) {
+  const Case c = load_case("cases/pilot_hopper.toml", sets);
+  return plan_arching_verification(c, design_check(c, ModelChoices{}), tolerance);
+}
+
+// The seed's hysteretic law has a cohesion branch (K_nc): the DEM can form cohesive arches, so it
+// searches the reduced B_c band (20.48-42.18 mm at 30 deg); 1 mm takes the design outlet's run
+// and 2 + ceil(log2(21.7)) = 7 widths.
+TEST(ArchingVerification, CohesiveLawSearchesTheReducedCriticalWidthBand) {
+  const auto plan = plan_for({}, 0.001);
+  EXPECT_EQ(plan.law, "hysteretic_nonlinear2");
+  EXPECT_EQ(plan.quantity, "critical_outlet_width");
+  EXPECT_NEAR(plan.low, 0.02048, 1e-5);
+  EXPECT_NEAR(plan.high, 0.04218, 1e-5);
+  EXPECT_EQ(plan.runs, 8);
+}
+
+// Hertz has no cohesion: only interlocking arches, at 3-8 diameters of the DEM's own spheres
+// (R = 3 mm: 18-48 mm), whatever the material's d90.
+TEST(ArchingVerification, LawWithoutCohesionSearchesTheInterlockingRangeOfItsSpheres) {
+  const auto plan =
+      plan_for({{"dem.normal_law", "hertz"}, {"material.dem.particle.radius", "3 mm"}}, 0.002);
+  EXPECT_EQ(plan.quantity, "mechanical_arching_width");
+  EXPECT_DOUBLE_EQ(plan.sphere_diameter, 0.006);
+  EXPECT_NEAR(plan.low, 0.018, 1e-12);
+  EXPECT_NEAR(plan.high, 0.048, 1e-12);
+  EXPECT_EQ(plan.runs, 1 + 2 + 4);  // log2(30 / 2) = 3.9
+  EXPECT_THROW(plan_for({}, 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace feedflow
