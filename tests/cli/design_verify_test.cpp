@@ -1,7 +1,8 @@
 // `feedflow design --verify` as a user runs it: a case clear of its limits does not escalate, a
 // MARGINAL throughput names the command that settles it, a budget too small refuses with the
 // plans' costs, and `--verify cel` puts the CEL rate (rung L2) in place of the reduced one, judged
-// again, with the reduced one beside it; a second run reads the CEL runs back.
+// again, with the reduced one beside it; a second run reads the CEL runs back; `--verify dem`
+// observes arching at the outlet and bisects the width on the particle rung.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -13,8 +14,9 @@ using namespace feedflow::testing;
 
 namespace {
 
-nlohmann::json design_json(const fs::path& dir, const std::string& flags) {
-  const feedflow::testing::Run r = run_feedflow("design cases/pilot_hopper.toml -q --json - " + flags, dir);
+nlohmann::json design_json(const fs::path& dir, const std::string& flags,
+                           const std::string& case_file = "cases/pilot_hopper.toml") {
+  const feedflow::testing::Run r = run_feedflow("design " + case_file + " -q --json - " + flags, dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   return nlohmann::json::parse(r.out);
 }
@@ -79,6 +81,54 @@ TEST(DesignVerify, CelRateReplacesTheReducedOneAndIsJudged) {
   const std::string text = pdf_text(dir / "out/pilot_hopper/report.pdf");
   EXPECT_NE(text.find("CEL material speed at t ="), std::string::npos) << text;
   EXPECT_NE(text.find("CEL mean stress"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// `--verify dem` on the DEM twin of the pilot hopper (Hertz, 6 mm spheres): a DEM run at the
+// design outlet says whether it arches (rung L3, the reduced label beside it), and the
+// interlocking width of the spheres is found by bisection on the outlet width.
+fs::path twin_folder() {
+  const fs::path dir = scratch_folder("feedflow_verify_dem", false);
+  fs::copy_file(fs::path(FEEDFLOW_SOURCE_DIR) / "tests/data/dem_hopper_twin.toml",
+                dir / "twin.toml");
+  return dir;
+}
+
+// The design outlet (60 mm, 10 sphere diameters) flows on the particle rung: "flowing" on rung
+// L3 with the reduced label beside it, judged pass; a budget of 1 s cannot hold the bisection's 6
+// more runs, which the verdict says with the time they would take, and nothing is half-verified.
+TEST(DesignVerifyDem, DesignOutletObservedAndBisectionRefusedBeyondTheBudget) {
+  const fs::path dir = twin_folder();
+  const auto j = design_json(dir, "--verify dem --width-tolerance 2mm --budget 1s", "twin.toml");
+  EXPECT_EQ(j["results"]["arching"]["rung"], "L3");
+  EXPECT_EQ(j["results"]["arching"]["value"], "flowing");
+  EXPECT_EQ(j["results"]["arching_reduced_model"]["rung"], "L0");
+  EXPECT_TRUE(said(j, "pass: the outlet flows (observed)"));
+  EXPECT_TRUE(said(j, "the bisection needs 6 more DEM runs")) << j["verdict"]["reasons"];
+  EXPECT_FALSE(j["results"].contains("mechanical_arching_width_dem_spheres"));
+  fs::remove_all(dir);
+}
+
+// LONG (about a minute): the whole bisection. The spheres' interlocking width lies inside the
+// rule's 3-8 d (18-48 mm) and is bracketed to 2 mm (arches below, flows above); it stands beside
+// the material's own (reduced) width, which the coarse-grained spheres do not verify; the same
+// command again reads every run back.
+TEST(DesignVerifyDem, LONG_BisectionBracketsTheSpheresInterlockingWidth) {
+  const fs::path dir = twin_folder();
+  const auto j = design_json(dir, "--verify dem --width-tolerance 2mm --budget 30min", "twin.toml");
+  const auto& w = j["results"]["mechanical_arching_width_dem_spheres"];
+  EXPECT_EQ(w["rung"], "L3");
+  EXPECT_EQ(w["unit"], "mm");
+  const double low = w["low"].get<double>(), high = w["high"].get<double>();
+  EXPECT_GE(low, 18.0);
+  EXPECT_LE(high, 48.0);
+  EXPECT_LT(low, high);
+  EXPECT_LE(high - low, 2.0 + 1e-9);
+  EXPECT_EQ(j["results"]["mechanical_arching_width"]["rung"], "L0");
+  EXPECT_TRUE(said(j, "mechanical arching width verified on the particle rung"));
+  const auto again = design_json(dir, "--verify dem --width-tolerance 2mm --budget 30min", "twin.toml");
+  EXPECT_EQ(again["results"]["mechanical_arching_width_dem_spheres"], w);
+  EXPECT_TRUE(said(again, "(0 s of runs)") || said(again, "; 0 s of runs)"));
   fs::remove_all(dir);
 }
 
