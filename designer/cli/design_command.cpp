@@ -98,25 +98,35 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
   const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
   const bool rate_marginal = marginal_on(record, "mass_flow_rate");
+  const auto quoted = [](const std::string& a) {
+    return a.find(' ') == std::string::npos ? a : "\"" + a + "\"";
+  };
+  std::string again = "feedflow design " + quoted(args.case_file);  // this check, as typed
+  for (const auto& set : args.options.sets) again += " --set " + quoted(set);
   if (marginal_on(record, "critical_outlet_width") ||
-      marginal_on(record, "mechanical_arching_width"))
+      marginal_on(record, "mechanical_arching_width")) {
+    std::string how;  // what --verify dem would run, when the case allows it
+    try {
+      const ArchingVerificationPlan plan = plan_arching_verification(
+          c, record, parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm"));
+      how = " (" + std::to_string(plan.runs) + " DEM runs with the " + plan.law +
+            " law: the outlet, then a bisection on the width to " + args.width_tolerance + ")";
+    } catch (const InputError& e) {
+      how = " (not with this case: " + std::string(e.what()) + ")";
+    }
     record.verdict.reasons.push_back(
         "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and "
-        "cannot arch; the "
-        "particle rung can (interlocking arches with any law, cohesive ones with the seed's K_nc): "
-        "feedflow design " +
-        args.case_file +
-        " --verify dem (a DEM run at the outlet, then a bisection on the width to " +
-        args.width_tolerance + ")");
+        "cannot arch; the particle rung can (interlocking arches with any law, cohesive ones with "
+        "the seed's K_nc): " + again + " --verify dem" + how);
+  }
   const bool wanted = args.verify == "cel" || (args.verify == "auto" && rate_marginal);
   if (!wanted) {
     if (rate_marginal) {
       const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
-      const auto quoted = [](const std::string& a) { return a.find(' ') == std::string::npos ? a : "\"" + a + "\""; };
-      std::string command = "feedflow design " + quoted(args.case_file);
-      for (const auto& set : args.options.sets) command += " --set " + quoted(set);
-      command += " --verify auto --tolerance " + quoted(args.tolerance) + " --budget " +
-                 format_number(std::ceil(plan.estimated_seconds / 60.0 * 1.2), 3) + "min";
+      const std::string command = again + " --verify auto --tolerance " + quoted(args.tolerance) +
+                                  " --budget " +
+                                  format_number(std::ceil(plan.estimated_seconds / 60.0 * 1.2), 3) +
+                                  "min";
       record.verdict.reasons.push_back(plan.cells_across.empty()
                                            ? "the discharge rate cannot be verified: " + plan.description
                                            : "to settle the discharge rate: " + command + " (" + plan.description + ")");

@@ -30,7 +30,9 @@ bool said(const nlohmann::json& j, const std::string& text) {
 // 100 mm without a throughput target: nothing inside a band, auto escalates nothing (no runs).
 // 45 mm with 1.4 kg/s required (the rate's band 0.65-3.1 kg/s): MARGINAL, the command that would
 // settle it is named; with --verify auto and 10 min the 10 % plans (5 and 46 min) do not fit and
-// the verdict says so.
+// the verdict says so. Its arching is MARGINAL too (45 mm < 1.2 x the B_c band top, 50.6 mm): the
+// continuum cannot arch, so the command for the particle rung is named, with the user's settings
+// and its runs (the outlet, then 7 widths to bisect 20.5-42.2 mm to 1 mm).
 TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const fs::path dir = scratch_folder("feedflow_verify", true);
   const auto clear = design_json(dir, "--set hopper.outlet_width=100mm --verify auto");
@@ -40,6 +42,9 @@ TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const auto asked = design_json(dir, marginal);
   EXPECT_TRUE(said(asked, "to settle the discharge rate: feedflow design cases/pilot_hopper.toml --set "
                           "hopper.outlet_width=45mm --set design.required_throughput=1.4kg/s --verify auto"));
+  EXPECT_TRUE(said(asked, "feedflow design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --set "
+                          "design.required_throughput=1.4kg/s --verify dem (8 DEM runs with the "
+                          "hysteretic_nonlinear2 law"));
   const auto refused = design_json(dir, marginal + " --verify auto --budget 10min");
   EXPECT_TRUE(said(refused, "mass flow rate not verified: no plan meets 10 % within 10 min"));
   EXPECT_EQ(refused["results"]["mass_flow_rate"]["rung"], "L0");
