@@ -208,6 +208,27 @@ json to_json(const DesignRecord& r) {
   return j;
 }
 
+Estimates estimates_from_json(const json& results) {
+  Estimates out;
+  try {
+    for (const auto& [name, q] : results.items()) {
+      const std::string where = "results." + name;
+      Estimate e;
+      e.value = value_from(field(q, "value", where), where + ".value");
+      e.unit = field(q, "unit", where).get<std::string>();
+      if (q.contains("low") && !q.at("low").is_null()) e.low = q.at("low").get<double>();
+      if (q.contains("high") && !q.at("high").is_null()) e.high = q.at("high").get<double>();
+      e.model = field(q, "model", where).get<std::string>();
+      e.rung = rung_from_string(field(q, "rung", where).get<std::string>());
+      e.display_unit = q.value("display_unit", "");
+      out.emplace_back(name, std::move(e));
+    }
+  } catch (const json::exception& e) {
+    throw std::invalid_argument(std::string("results JSON: ") + e.what());
+  }
+  return out;
+}
+
 DesignRecord design_record_from_json(const json& j) {
   DesignRecord r;
   try {
@@ -219,18 +240,7 @@ DesignRecord design_record_from_json(const json& j) {
     r.description = c.value("description", "");
     const json units = j.value("input_units", json::object());
     collect_nested(field(j, "inputs", "results"), "", units, r.inputs);
-    for (const auto& [name, q] : field(j, "results", "results").items()) {
-      const std::string where = "results." + name;
-      Estimate e;
-      e.value = value_from(field(q, "value", where), where + ".value");
-      e.unit = field(q, "unit", where).get<std::string>();
-      if (q.contains("low") && !q.at("low").is_null()) e.low = q.at("low").get<double>();
-      if (q.contains("high") && !q.at("high").is_null()) e.high = q.at("high").get<double>();
-      e.model = field(q, "model", where).get<std::string>();
-      e.rung = rung_from_string(field(q, "rung", where).get<std::string>());
-      e.display_unit = q.value("display_unit", "");
-      r.results.emplace_back(name, std::move(e));
-    }
+    r.results = estimates_from_json(field(j, "results", "results"));
     const json& v = field(j, "verdict", "results");
     r.verdict.status = verdict_status_from_string(field(v, "status", "verdict").get<std::string>());
     r.verdict.reasons = field(v, "reasons", "verdict").get<std::vector<std::string>>();

@@ -137,4 +137,48 @@ TEST(DesignVerifyDem, LONG_BisectionBracketsTheSpheresInterlockingWidth) {
   fs::remove_all(dir);
 }
 
+// `--verify dem` on a drum (the DEM scene tests' reduced twin: 3 mm spheres, Hertz, 18 mm slab,
+// 0.6 s of rotation): the DEM angle and regime stand in the record (rung L3) with the reduced ones
+// beside them, each verified or contradicted with both answers; the run is named for the report.
+TEST(DesignVerifyScenes, DrumAngleAndRegimeOnTheParticleRung) {
+  const fs::path dir = scratch_folder("feedflow_verify_drum", true);
+  const auto j =
+      design_json(dir,
+                  "--verify dem --set dem.slab_depth=18mm --set dem.normal_law=hertz --set "
+                  "material.dem.particle.radius=3mm --set dem.end_time=0.6s --out v",
+                  "cases/rotating_drum_20rpm.toml");
+  EXPECT_EQ(j["results"]["regime"]["rung"], "L3");
+  EXPECT_EQ(j["results"]["regime_reduced_model"]["rung"], "L0");
+  EXPECT_EQ(j["results"]["dynamic_angle_of_repose"]["rung"], "L3");
+  EXPECT_EQ(j["results"]["dynamic_angle_of_repose"]["unit"], "deg");
+  EXPECT_TRUE(said(j, "regime verified on the particle rung (DEM): reduced rolling, DEM rolling") ||
+              said(j, "regime contradicted on the particle rung"));
+  EXPECT_TRUE(said(j, "dynamic angle of repose verified on the particle rung") ||
+              said(j, "dynamic angle of repose contradicted on the particle rung"));
+  EXPECT_EQ(j["provenance"]["simulation_runs"].size(), 1u);
+  fs::remove_all(dir);
+}
+
+// The resolution guard: a chute deposit the DEM twin measures thinner than two of its 6 mm
+// spheres is not taken as a verification; the reduced answer stays (rung L1) and the note says
+// what the run could resolve.
+TEST(DesignVerifyScenes, ChuteLayerThinnerThanTwoParticlesIsNotVerified) {
+  const fs::path dir = scratch_folder("feedflow_verify_chute", true);
+  const auto j = design_json(
+      dir,
+      "--verify dem --set dem.slab_depth=18mm --set dem.normal_law=hertz --set "
+      "material.dem.particle.radius=3mm --set dem.end_time=1s --set chute.bin_length=100mm "
+      "--set chute.bin_height=0.16m --set chute.fill_height=80mm --set chute.length=0.4m "
+      "--set chute.gate_opening=50mm",
+      "cases/inclined_plane_29_5.toml");
+  // The run is the same bits every time: the twin's deposit is 5.5 mm, under one sphere.
+  EXPECT_EQ(j["results"]["deposit_thickness_mid_ramp"]["rung"], "L1");
+  EXPECT_FALSE(j["results"].contains("deposit_thickness_mid_ramp_reduced_model"));
+  EXPECT_TRUE(said(
+      j,
+      "deposit thickness mid ramp not verified on the particle rung (DEM): its 5.479 mm is thinner "
+      "than two particle diameters (12 mm), which the run cannot resolve"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
