@@ -42,7 +42,7 @@ struct ArchingVerification {
   WidthBisection bisection;
   std::string status = "done";       // or why it stopped
   double wall_seconds = 0.0;         // of the runs made now
-  double longest_run = 0.0;          // [s] the slowest run made now
+  double longest_run = 0.0;          // [s] the slowest run (its time when it was made)
   std::filesystem::path design_run;  // the design outlet's run folder
 };
 
