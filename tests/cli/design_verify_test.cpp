@@ -181,4 +181,21 @@ TEST(DesignVerifyScenes, ChuteLayerThinnerThanTwoParticlesIsNotVerified) {
   fs::remove_all(dir);
 }
 
+// `auto` on a drum plans no run: none of these scenes has a measured wall time (the seed's DEM
+// drum is about 14 h), so a MARGINAL drum (33 rpm: Fr = 0.0883, within 25 % of the rolling |
+// cascading boundary at 0.1) names the particle-rung command and makes no run folder.
+TEST(DesignVerifyScenes, AutoNamesTheDrumRunButMakesNone) {
+  const fs::path dir = scratch_folder("feedflow_verify_drum_auto", true);
+  const auto j =
+      design_json(dir, "--set drum.speed=33rpm --verify auto", "cases/rotating_drum_20rpm.toml");
+  EXPECT_EQ(j["verdict"]["status"], "marginal");
+  EXPECT_TRUE(said(j,
+                   "to settle it on the particle rung: feedflow design "
+                   "cases/rotating_drum_20rpm.toml --verify dem"));
+  EXPECT_TRUE(said(j, "not run by auto"));
+  EXPECT_EQ(j["results"]["regime"]["rung"], "L0");
+  EXPECT_FALSE(fs::exists(dir / "out" / "rotating_drum_20rpm_verify"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
