@@ -9,6 +9,7 @@
 #include "designer/case/table_reader.hpp"
 #include "designer/case/toml_text.hpp"
 #include "designer/case/written_units.hpp"
+#include "models/contact/contact_law_registry.hpp"
 
 namespace fs = std::filesystem;
 
@@ -198,6 +199,15 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
       raise_problems({{"time_step_safety", "give either [dem] time_step or time_step_safety, not both (the step or "
                                            "its fraction of the stable one)"}},
                      *dem, TableContext{"dem", path}, nullptr);
+    try {  // k_nc needs a normal law with a K_nc branch
+      choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion);
+    } catch (const InputError&) {
+      raise_problems({{"cohesion",
+                       "k_nc cohesion is the hysteretic laws' K_nc branch: use it with "
+                       "normal_law hysteretic_nonlinear2 or hysteretic_nonlinear1, not " +
+                           c.dem.normal_law}},
+                     *dem, TableContext{"dem", path}, nullptr);
+    }
   }
   if (const toml::table* cel = table_at(root, "cel", path))
     read_fields(*cel, cel_case_fields(), c.cel, TableContext{"cel", path});

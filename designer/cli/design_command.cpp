@@ -135,9 +135,17 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
   if (marginal_on(record, "critical_outlet_width") ||
       marginal_on(record, "mechanical_arching_width")) {
     std::string how;  // what --verify dem would run, when the case allows it
+    std::string command = again + " --verify dem";
+    Case particles = c;
+    if (marginal_on(record, "critical_outlet_width"))  // cohesive arches need contacts that pull
+      if (auto cohesive = with_cohesive_contacts(c)) {
+        particles = *cohesive;
+        command = again + " --set dem.cohesion=k_nc --verify dem";
+      }
     try {
       const ArchingVerificationPlan plan = plan_arching_verification(
-          c, record, parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm"));
+          particles, record,
+          parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm"));
       how = " (" + std::to_string(plan.runs) + " DEM runs with the " + plan.law +
             " law: the outlet, then a bisection on the width to " + args.width_tolerance + ")";
     } catch (const InputError& e) {
@@ -146,7 +154,8 @@ bool verification(const DesignArguments& args, const Case& c, const std::filesys
     record.verdict.reasons.push_back(
         "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and "
         "cannot arch; the particle rung can (interlocking arches with any law, cohesive ones with "
-        "the seed's K_nc): " + again + " --verify dem" + how);
+        "the seed's K_nc): " +
+        command + how);
   }
   const bool wanted = args.verify == "cel" || (args.verify == "auto" && rate_marginal);
   if (!wanted) {

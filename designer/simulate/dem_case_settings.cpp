@@ -11,7 +11,7 @@ DemSettings dem_case_settings(const Case& c) {
                                              " has no [dem] parameters (seed Table 2); the DEM needs them");
   DemSettings s;
   s.material = *c.material.dem;
-  s.law = choose_contact_law(c.dem.normal_law);
+  s.law = choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion);  // checked on loading
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
   if (c.dem.time_step_safety) s.stable_step_fraction = *c.dem.time_step_safety;
   return s;

@@ -15,10 +15,11 @@
 namespace feedflow {
 namespace {
 
-bool law_has_cohesion(const std::string& normal_law) {
-  return with_contact_law(choose_contact_law(normal_law), [](auto law) {
-    return decltype(law)::type::NormalPart::kHasCohesionBranch;
-  });
+// Whether the case's DEM contacts can pull (a cohesion part that lets the law's K_nc branch act).
+bool contacts_pull(const Case& c) {
+  return with_contact_law(
+      choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion),
+      [](auto law) { return decltype(law)::type::CohesionPart::kNeedsCohesionBranch; });
 }
 
 std::string mm(double metres) { return format_quantity(metres, "mm", 4); }
@@ -84,6 +85,17 @@ std::string result_key(const Case& c, const ArchingVerificationPlan& plan) {
 
 }  // namespace
 
+std::optional<Case> with_cohesive_contacts(const Case& c) {
+  if (!c.dem.cohesion.empty()) return std::nullopt;
+  const bool has_branch = with_contact_law(choose_contact_law(c.dem.normal_law), [](auto law) {
+    return decltype(law)::type::NormalPart::kHasCohesionBranch;
+  });
+  if (!has_branch) return std::nullopt;
+  Case cohesive = c;
+  cohesive.dem.cohesion = "k_nc";
+  return cohesive;
+}
+
 ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRecord& record,
                                                   double tolerance) {
   if (!(tolerance > 0.0))
@@ -91,7 +103,8 @@ ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRec
   ArchingVerificationPlan plan;
   plan.law = c.dem.normal_law.empty() ? std::string("hysteretic_nonlinear2") : c.dem.normal_law;
   plan.tolerance = tolerance;
-  if (law_has_cohesion(plan.law)) {
+  if (contacts_pull(c)) {
+    plan.law += " + k_nc cohesion";
     plan.quantity = "critical_outlet_width";
     const Estimate* band = find_estimate(record.results, plan.quantity);
     if (!band || !band->is_number() || !band->low || !band->high || !(*band->high > *band->low))
@@ -200,13 +213,12 @@ void apply_arching_verification(const Case& c, const ArchingVerificationPlan& pl
   }
   if (plan.quantity == "mechanical_arching_width")
     notes.push_back(
-        "the DEM law " + plan.law +
-        " has no cohesion: its arches are interlocking ones, so it verifies "
-        "the interlocking rule (3-8) d on its " +
+        "the DEM contacts (" + plan.law +
+        ", cohesion none) do not pull: their arches are interlocking ones, so it verifies the "
+        "interlocking rule (3-8) d on its " +
         mm(plan.sphere_diameter) +
         " spheres, searched between 3 d and 8 d, not the cohesive B_c (the seed's hysteretic law "
-        "with "
-        "K_nc can)" +
+        "with dem.cohesion = k_nc can)" +
         (result_key(c, plan) == plan.quantity
              ? std::string()
              : "; the spheres are not the material's grains (d90 " +

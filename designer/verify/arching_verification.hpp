@@ -3,9 +3,10 @@
 // the design outlet says whether it arches, and the critical width is found by bisection on the
 // outlet width (width_bisection.hpp) inside the reduced rung's band, each width a DEM run of the
 // case (flows or arches, as `feedflow simulate --solver dem` measures it). Which width the runs
-// verify depends on the contact law: one with a cohesion branch (the seed's hysteretic law, K_nc)
-// can form cohesive arches and verifies B_c inside the reduced band; a law without (Hertz, Hooke)
-// shows interlocking arches only and verifies the rule (3-8) d on the DEM's spheres (a
+// verify depends on the contacts: ones that pull ([dem] cohesion = k_nc, the seed's hysteretic
+// law's K_nc branch) can form cohesive arches and verify B_c inside the reduced band; ones that do
+// not (cohesion none, the default as in the seed's software, or Hertz, Hooke) show interlocking
+// arches only and verifies the rule (3-8) d on the DEM's spheres (a
 // coarse-grained DEM's spheres are not the material's grains, so its width then stands beside
 // the material's reduced one instead of replacing it). Each width has its own wedge walls, so
 // its own fill: the fill cannot be reused between steps (it can only when the walls stay, as in
@@ -22,9 +23,14 @@
 
 namespace feedflow {
 
+// The case with contacts that pull ([dem] cohesion = k_nc), which a cohesive B_c needs on the
+// particle rung, when its normal law has a K_nc branch and the case names no cohesion of its
+// own; nullopt otherwise (the case stays as written).
+std::optional<Case> with_cohesive_contacts(const Case& c);
+
 struct ArchingVerificationPlan {
   std::string quantity;  // "critical_outlet_width" (cohesive law) or "mechanical_arching_width"
-  std::string law;       // the DEM normal law's keyword
+  std::string law;       // the DEM normal law's keyword (+ " + k_nc cohesion" when contacts pull)
   double low = 0.0,
          high = 0.0;  // the band searched [m]: the reduced B_c band, or 3-8 sphere diameters
   double sphere_diameter = 0.0;  // [m] of the DEM's spheres (interlocking)

@@ -40,10 +40,10 @@ class ContactLaw {
 
   ContactLaw() = default;
   ContactLaw(Normal normal, Tangential tangential, Rolling rolling, Cohesion cohesion = {})
-      : normal_(normal), tangential_(tangential), rolling_(rolling), cohesion_(cohesion) {}
+      : normal_(acting(normal)), tangential_(tangential), rolling_(rolling), cohesion_(cohesion) {}
   // Each part takes its values from one Table 2 column (P-P or P-W).
   explicit ContactLaw(const DemContactParameters& p)
-      : normal_(Normal::from_material(p)),
+      : normal_(acting(Normal::from_material(p))),
         tangential_(Tangential::from_material(p)),
         rolling_(Rolling::from_material(p)),
         cohesion_(Cohesion::from_material(p)) {}
@@ -93,6 +93,14 @@ class ContactLaw {
   const Rolling& rolling() const { return rolling_; }
 
  private:
+  // The normal part as the cohesion part lets it act (a law with a cohesion branch may pull
+  // further below delta0 when contacts may pull at all).
+  static Normal acting(const Normal& n) {
+    if constexpr (Cohesion::kNeedsCohesionBranch)
+      return n.cohesive();
+    else
+      return n;
+  }
   static RollingLoad rolling_load(const NormalResponse& n, double fn, double kt) {
     const double ref = Normal::kRollingOnTotalForce ? fn : n.elastic_force;
     return {ref > 0.0 ? ref : 0.0, fn, kt};

@@ -29,6 +29,9 @@ class HystereticNonlinear1 {
     return HystereticNonlinear1(HystereticParameters::from_material(p));
   }
   const HystereticParameters& parameters() const { return p_; }
+  // Model 1's -k_c delta branch is part of the peer's law (clipped by limitForce unless the
+  // cohesion part lets contacts pull): the cohesive law is the same.
+  HystereticNonlinear1 cohesive() const { return *this; }
 
   NormalResponse respond(const ContactInput& in, double* h) const {
     namespace s = hysteretic_slot;

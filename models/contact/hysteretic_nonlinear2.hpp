@@ -4,8 +4,9 @@
 // including its quirks: branch choice from the overlap and the normal velocity, the offsets
 // that make reloading continuous, the damping forms (loading g(k1)(sqrt(delta)+sqrt(delta0)),
 // unloading 0.001 g(k1_old) delta^-1/4) and k_t = k1, gamma_t = gamma_n handed on.
-// Cohesion (models.md 3.5, [I]): below delta0 the force is max(exponential tail, -k_c delta),
-// the same construction as model 1; it only matters when the cohesion part does not clip.
+// Cohesion (models.md 3.5, [I]): with the k_nc cohesion part (`cohesive()`), below delta0 the
+// force is max(exponential tail, -k_c delta), the same construction as model 1. Without it there
+// is no floor, as in the peer: the tail, the damping, then the clip at zero.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -32,6 +33,12 @@ class HystereticNonlinear2 {
     return HystereticNonlinear2(HystereticParameters::from_material(p));
   }
   const HystereticParameters& parameters() const { return p_; }
+  // The law as it acts when the cohesion part lets contacts pull: with the -k_c delta floor.
+  HystereticNonlinear2 cohesive() const {
+    HystereticNonlinear2 law = *this;
+    law.p_.cohesion_floor = true;
+    return law;
+  }
 
   NormalResponse respond(const ContactInput& in, double* h) const {
     namespace s = hysteretic_slot;
@@ -51,7 +58,7 @@ class HystereticNonlinear2 {
         f = p_.alpha * k1 * (d - d0) * (d - d0) + h[s::loading_offset];
       } else {
         f = p_.c * p_.a3 * k1 * std::expm1(h[s::unloading_shape] * (d - d0));
-        f = std::max(f, -p_.cohesion_stiffness * d);
+        if (p_.cohesion_floor) f = std::max(f, -p_.cohesion_stiffness * d);
       }
       h[s::plastic_overlap_old] = d0;
       h[s::loading_stiffness_old] = k1;
@@ -71,7 +78,8 @@ class HystereticNonlinear2 {
         f = p_.c * k2 * std::expm1(beta * x) + x * h[s::loading_offset_old] / (dmax - d0_new);
         h[s::loading_offset] = f - p_.alpha * k1 * x * x;
       } else {
-        f = std::max(p_.c * k2 * std::expm1(beta * x), -p_.cohesion_stiffness * d);
+        f = p_.c * k2 * std::expm1(beta * x);
+        if (p_.cohesion_floor) f = std::max(f, -p_.cohesion_stiffness * d);
         h[s::loading_offset] = 0.0;
       }
       h[s::plastic_overlap] = d0_new;

@@ -14,6 +14,9 @@ struct HystereticParameters {
   double a3 = 0.0;              // unloading / loading stiffness ratio [-]
   double c = 0.0;               // unloading force scaling [m^2]
   double cohesion_stiffness = 0.0;  // k_c = K_nc A2, used when cohesion is on
+  // Model 2's -k_c delta floor below delta0 (models.md 3.5 [I]): only with the k_nc cohesion
+  // part (ContactLaw sets it through `cohesive()`); the peer's model 2 has none.
+  bool cohesion_floor = false;
   double damping_factor = 0.0;  // 1/(1 + (pi/ln e)^2) from the restitution
   // Table 2 mapping (models.md 3.1). Throws InputError when chi != 2 (the seed software
   // hard-codes the square).

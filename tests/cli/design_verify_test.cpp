@@ -42,9 +42,10 @@ TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const auto asked = design_json(dir, marginal);
   EXPECT_TRUE(said(asked, "to settle the discharge rate: feedflow design cases/pilot_hopper.toml --set "
                           "hopper.outlet_width=45mm --set design.required_throughput=1.4kg/s --verify auto"));
-  EXPECT_TRUE(said(asked, "feedflow design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --set "
-                          "design.required_throughput=1.4kg/s --verify dem (8 DEM runs with the "
-                          "hysteretic_nonlinear2 law"));
+  EXPECT_TRUE(said(asked,
+                   "feedflow design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --set "
+                   "design.required_throughput=1.4kg/s --set dem.cohesion=k_nc --verify dem (8 DEM "
+                   "runs with the hysteretic_nonlinear2 + k_nc cohesion law"));
   const auto refused = design_json(dir, marginal + " --verify auto --budget 10min");
   EXPECT_TRUE(said(refused, "mass flow rate not verified: no plan meets 10 % within 10 min"));
   EXPECT_EQ(refused["results"]["mass_flow_rate"]["rung"], "L0");

@@ -15,16 +15,35 @@ ArchingVerificationPlan plan_for(const std::vector<SetOverride>& sets, double to
   return plan_arching_verification(c, design_check(c, ModelChoices{}), tolerance);
 }
 
-// The seed's hysteretic law has a cohesion branch (K_nc): the DEM can form cohesive arches, so it
-// searches the reduced B_c band (20.48-42.18 mm at 30 deg); 1 mm takes the design outlet's run
-// and 2 + ceil(log2(21.7)) = 7 widths.
+// The seed's hysteretic law with contacts that pull (cohesion k_nc): the DEM can form cohesive
+// arches, so it searches the reduced B_c band (20.48-42.18 mm at 30 deg); 1 mm takes the design
+// outlet's run and 2 + ceil(log2(21.7)) = 7 widths.
 TEST(ArchingVerification, CohesiveLawSearchesTheReducedCriticalWidthBand) {
-  const auto plan = plan_for({}, 0.001);
-  EXPECT_EQ(plan.law, "hysteretic_nonlinear2");
+  const auto plan = plan_for({{"dem.cohesion", "k_nc"}}, 0.001);
+  EXPECT_EQ(plan.law, "hysteretic_nonlinear2 + k_nc cohesion");
   EXPECT_EQ(plan.quantity, "critical_outlet_width");
   EXPECT_NEAR(plan.low, 0.02048, 1e-5);
   EXPECT_NEAR(plan.high, 0.04218, 1e-5);
   EXPECT_EQ(plan.runs, 8);
+}
+
+// The same law as the seed's software runs it (cohesion none: the force clipped at zero) cannot
+// pull, so only interlocking arches: 3-8 diameters of its 3 mm spheres (9-24 mm, 1 + 2 + 4 runs);
+// the case with contacts that pull is the one a cohesive B_c needs.
+TEST(ArchingVerification, SeedLawWithoutCohesionSearchesTheInterlockingRange) {
+  const Case c = load_case("cases/pilot_hopper.toml", {});
+  const auto plan = plan_arching_verification(c, design_check(c, ModelChoices{}), 0.001);
+  EXPECT_EQ(plan.law, "hysteretic_nonlinear2");
+  EXPECT_EQ(plan.quantity, "mechanical_arching_width");
+  EXPECT_NEAR(plan.low, 0.009, 1e-12);
+  EXPECT_NEAR(plan.high, 0.024, 1e-12);
+  EXPECT_EQ(plan.runs, 1 + 2 + 4);
+  const auto cohesive = with_cohesive_contacts(c);
+  ASSERT_TRUE(cohesive.has_value());
+  EXPECT_EQ(cohesive->dem.cohesion, "k_nc");
+  EXPECT_FALSE(with_cohesive_contacts(*cohesive).has_value());  // a case's own choice stays
+  const std::vector<SetOverride> hertz{{"dem.normal_law", "hertz"}};
+  EXPECT_FALSE(with_cohesive_contacts(load_case("cases/pilot_hopper.toml", hertz)).has_value());
 }
 
 // Hertz has no cohesion: only interlocking arches, at 3-8 diameters of the DEM's own spheres
