@@ -157,7 +157,7 @@ class LawForces final : public ForceKernel {
           const double reach = ri + rj;
           const double r2 = squared_norm(d);  // contact_kinematics.hpp
           if (r2 >= reach * reach) {
-            clear_history<kHistory>(history + static_cast<std::size_t>(e) * kHistory);
+            clear_history<Law>(history + static_cast<std::size_t>(e) * kHistory);
             continue;
           }
           const std::size_t k = b.count;

@@ -14,10 +14,15 @@
 namespace feedflow {
 
 // Zeroes an open contact's history; reads first, so that the many open entries of a dense
-// list are not written (and their cache lines not dirtied) every step.
-template <std::size_t kHistory>
+// list are not written (and their cache lines not dirtied) every step. A law whose first slot is
+// non-zero once the contact has touched (Law::kFirstSlotMarksUse: the hysteretic laws' largest
+// overlap) is read at that slot only.
+template <class Law>
 inline void clear_history(double* h) {
-  if constexpr (kHistory > 0) {
+  constexpr std::size_t kHistory = Law::kHistorySize;
+  if constexpr (Law::kFirstSlotMarksUse) {
+    if (h[0] != 0.0) std::fill(h, h + kHistory, 0.0);
+  } else if constexpr (kHistory > 0) {
     for (std::size_t k = 0; k < kHistory; ++k)
       if (h[k] != 0.0) {
         std::fill(h, h + kHistory, 0.0);
@@ -56,7 +61,7 @@ class WallContactForces {
         const WallTouch touch = wall.touch(xi);
         const double overlap = ri - touch.gap;
         if (!(overlap > 0.0) || !wall.active(c.time)) {
-          clear_history<kHistory>(h);
+          clear_history<Law>(h);
           continue;
         }
         const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);

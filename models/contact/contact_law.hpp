@@ -37,6 +37,14 @@ class ContactLaw {
   static constexpr std::size_t kRollingOffset = kTangentialOffset + Tangential::kHistorySize;
   static constexpr std::size_t kHistorySize = kRollingOffset + Rolling::kHistorySize;
   using History = std::array<double, kHistorySize>;
+  // The first history slot is non-zero after any evaluation of a touching contact (until it
+  // opens and the history is zeroed), so one look tells a used history from a cleared one.
+  static constexpr bool kFirstSlotMarksUse = [] {
+    if constexpr (requires { Normal::kFirstSlotMarksUse; })
+      return Normal::kFirstSlotMarksUse;
+    else
+      return false;
+  }();
 
   ContactLaw() = default;
   ContactLaw(Normal normal, Tangential tangential, Rolling rolling, Cohesion cohesion = {})

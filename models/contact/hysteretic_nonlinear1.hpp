@@ -21,6 +21,7 @@ class HystereticNonlinear1 {
       "Chen hysteretic law, linear unloading, K_nc cohesion branch";
   static constexpr std::size_t kHistorySize = hysteretic_slot::count;
   static constexpr bool kHasCohesionBranch = true;
+  static constexpr bool kFirstSlotMarksUse = true;  // delta_max > 0 once the contact has touched
   static constexpr bool kRollingOnTotalForce = true;
 
   HystereticNonlinear1() = default;

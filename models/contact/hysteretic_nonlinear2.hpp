@@ -15,6 +15,7 @@
 #include "models/contact/contact_kinematics.hpp"
 #include "models/contact/hysteretic_parameters.hpp"
 #include "models/contact/normal_response.hpp"
+#include "models/numerics/lane_math.hpp"
 
 namespace feedflow {
 
@@ -25,6 +26,7 @@ class HystereticNonlinear2 {
       "Chen 2022 hysteretic law, exponential unloading (seed Eq. 7)";
   static constexpr std::size_t kHistorySize = hysteretic_slot::count;
   static constexpr bool kHasCohesionBranch = true;
+  static constexpr bool kFirstSlotMarksUse = true;    // delta_max > 0 once the contact has touched
   static constexpr bool kRollingOnTotalForce = true;  // INL `cdtnonlinear2`: F_ref = F_n
 
   HystereticNonlinear2() = default;
@@ -40,55 +42,61 @@ class HystereticNonlinear2 {
     return law;
   }
 
+  // Both branches are computed and the history written through selects (no branch, no call:
+  // lane_math's exp and log), so the pair loop's batch runs this as one vector loop; a branch's
+  // values in a lane that takes the other (e.g. a division by zero on a first contact's
+  // unloading side) are computed and dropped.
   NormalResponse respond(const ContactInput& in, double* h) const {
     namespace s = hysteretic_slot;
     const double d = in.overlap;
     const double d_old = h[s::previous_overlap];
     const double d0 = h[s::plastic_overlap];
     const double dmax = std::max(h[s::max_overlap], d);
+    const double f0 = h[s::loading_offset];
+    const double k1_stored = h[s::loading_stiffness];
+    const double k1_old = h[s::loading_stiffness_old];
+    const double d0_old = h[s::plastic_overlap_old];
+    const double f0_old = h[s::loading_offset_old];
+    // Bitwise, not short-circuit: g++ does not if-convert && and || in a vector loop.
+    const bool loading = (d >= d_old) & ((d_old == 0.0) | (in.normal_velocity <= 0.0));
+
+    // Loading (models.md 3.3 step 3): on the loading curve above delta0, below it back up the
+    // last unloading curve.
+    const double k1_loading = d0 == 0.0 ? p_.a2 : k1_stored;
+    const double above = p_.alpha * k1_loading * (d - d0) * (d - d0) + f0;
+    const double below = floored(
+        p_.c * p_.a3 * k1_loading * (lane_math::exp(h[s::unloading_shape] * (d - d0)) - 1.0), d);
+    const double f_loading = d > d0 ? above : below;
+    const double gamma_loading =
+        damping_scale(in.effective_mass, k1_loading) * (std::sqrt(d) + std::sqrt(d0));
+
+    // Unloading (step 4): the exponential curve from the largest overlap, recomputed each step.
+    const double k2 = p_.a3 * (p_.a1 * dmax + p_.a2);
+    const double d0_new = (1.0 - k1_old / k2) * dmax;
+    const double beta =
+        lane_math::log(p_.alpha * k1_old * (dmax - d0_old) * (dmax - d0_old) / (p_.c * k2) + 1.0) /
+        (dmax - d0_new);
+    const double k1_next = p_.a1 * dmax + p_.a2;
+    const double x = d - d0_new;
+    const double tail = p_.c * k2 * (lane_math::exp(beta * x) - 1.0);
+    const bool on_ramp = d >= d0_new;
+    const double ramp = tail + x * f0_old / (dmax - d0_new);
+    const double f_unloading = on_ramp ? ramp : floored(tail, d);
+    const double gamma_unloading =
+        0.001 * damping_scale(in.effective_mass, k1_old) / std::sqrt(std::sqrt(d));
+
     h[s::max_overlap] = dmax;
-    const bool loading = d >= d_old && (d_old == 0.0 || in.normal_velocity <= 0.0);
-    double f = 0.0;
-    double gamma = 0.0;
-    double k1 = 0.0;
-    if (loading) {
-      k1 = d0 == 0.0 ? p_.a2 : h[s::loading_stiffness];
-      h[s::loading_offset_old] = h[s::loading_offset];
-      if (d > d0) {
-        f = p_.alpha * k1 * (d - d0) * (d - d0) + h[s::loading_offset];
-      } else {
-        f = p_.c * p_.a3 * k1 * std::expm1(h[s::unloading_shape] * (d - d0));
-        if (p_.cohesion_floor) f = std::max(f, -p_.cohesion_stiffness * d);
-      }
-      h[s::plastic_overlap_old] = d0;
-      h[s::loading_stiffness_old] = k1;
-      h[s::loading_stiffness] = k1;
-      h[s::previous_overlap] = d;
-      gamma = damping_scale(in.effective_mass, k1) * (std::sqrt(d) + std::sqrt(d0));
-    } else {
-      const double k1_old = h[s::loading_stiffness_old];
-      const double d0_old = h[s::plastic_overlap_old];
-      const double k2 = p_.a3 * (p_.a1 * dmax + p_.a2);
-      const double d0_new = (1.0 - k1_old / k2) * dmax;
-      const double beta = std::log(p_.alpha * k1_old * (dmax - d0_old) * (dmax - d0_old) /
-                                   (p_.c * k2) + 1.0) / (dmax - d0_new);
-      k1 = p_.a1 * dmax + p_.a2;
-      const double x = d - d0_new;
-      if (d >= d0_new) {
-        f = p_.c * k2 * std::expm1(beta * x) + x * h[s::loading_offset_old] / (dmax - d0_new);
-        h[s::loading_offset] = f - p_.alpha * k1 * x * x;
-      } else {
-        f = p_.c * k2 * std::expm1(beta * x);
-        if (p_.cohesion_floor) f = std::max(f, -p_.cohesion_stiffness * d);
-        h[s::loading_offset] = 0.0;
-      }
-      h[s::plastic_overlap] = d0_new;
-      h[s::loading_stiffness] = k1;
-      h[s::previous_overlap] = d;
-      h[s::unloading_shape] = beta;
-      gamma = 0.001 * damping_scale(in.effective_mass, k1_old) / std::sqrt(std::sqrt(d));
-    }
-    return {f - gamma * in.normal_velocity, f, k1, gamma};
+    h[s::previous_overlap] = d;
+    h[s::loading_offset_old] = loading ? f0 : f0_old;
+    h[s::plastic_overlap_old] = loading ? d0 : d0_old;
+    h[s::loading_stiffness_old] = loading ? k1_loading : k1_old;
+    h[s::loading_stiffness] = loading ? k1_loading : k1_next;
+    h[s::plastic_overlap] = loading ? d0 : d0_new;
+    h[s::unloading_shape] = loading ? h[s::unloading_shape] : beta;
+    h[s::loading_offset] = loading ? f0 : (on_ramp ? ramp - p_.alpha * k1_next * x * x : 0.0);
+    const double f = loading ? f_loading : f_unloading;
+    const double gamma = loading ? gamma_loading : gamma_unloading;
+    return {f - gamma * in.normal_velocity, f, loading ? k1_loading : k1_next, gamma};
   }
 
   // Largest of the loading slope at the current overlap and the slope of the unloading curve
@@ -104,7 +112,7 @@ class HystereticNonlinear2 {
     const double k2 = p_.a3 * (p_.a1 * dmax + p_.a2);
     const double d0_new = (1.0 - k1_old / k2) * dmax;
     const double peak = p_.alpha * k1_old * (dmax - d0_old) * (dmax - d0_old);
-    const double beta = std::log(peak / (p_.c * k2) + 1.0) / (dmax - d0_new);
+    const double beta = lane_math::log(peak / (p_.c * k2) + 1.0) / (dmax - d0_new);
     const double unloading = beta * (peak + p_.c * k2) +
                              h[s::loading_offset_old] / (dmax - d0_new);
     return std::max(loading, unloading);
@@ -114,6 +122,11 @@ class HystereticNonlinear2 {
   // g = sqrt(4 m* alpha K / (1 + (pi/ln e)^2)) (models.md 3.3 step 5)
   double damping_scale(double mass, double stiffness) const {
     return std::sqrt(4.0 * mass * p_.alpha * stiffness * p_.damping_factor);
+  }
+  // Below delta0 with the k_nc cohesion part: no more attractive than -k_c delta.
+  double floored(double f, double d) const {
+    const double floor = -p_.cohesion_stiffness * d;
+    return (p_.cohesion_floor & (f < floor)) ? floor : f;
   }
   HystereticParameters p_;
 };
