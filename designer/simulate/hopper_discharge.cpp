@@ -95,6 +95,12 @@ SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge
                          Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
                                   w.speeds + " at mid-height of the converging section, averaged over the steady window",
                                   w.rung, ""});
+    results.emplace_back(
+        "stagnant_zone_width",
+        Estimate{ratio.stagnant_width * 1e3, "mm", std::nullopt, std::nullopt,
+                 "band at the wall moving slower than a tenth of the centre line, on the "
+                 "same line and window (0: the material at the wall moves)",
+                 w.rung, ""});
   }
   return arched ? SteadyRate{} : rate;
 }

@@ -11,6 +11,10 @@ WallSpeedRatio wall_to_centre_speed_ratio(const SpeedProfile& line) {
   if (line.speed.empty() || !(line.speed.front() > 0.0)) return r;
   r.ratio = line.speed.back() / line.speed.front();
   r.measured = true;
+  const double moving = kMassFlowSpeedRatio * line.speed.front();
+  std::size_t k = line.speed.size() - 1;
+  while (k > 0 && !(line.speed[k] > moving)) --k;
+  r.stagnant_width = line.offset.back() - line.offset[k];
   return r;
 }
 

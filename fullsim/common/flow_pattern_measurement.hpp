@@ -22,11 +22,14 @@ inline constexpr double kMassFlowSpeedRatio = 0.1;
 
 struct WallSpeedRatio {
   double ratio = 0.0;          // wall speed / centre speed
+  double stagnant_width = 0.0;  // [m] the band at the wall moving slower than a tenth of the centre
   bool measured = false;       // material on the line and a moving centre
   std::string label() const { return ratio > kMassFlowSpeedRatio ? "mass" : "funnel"; }
 };
 
-// The speed of the outermost point over that of the innermost.
+// The speed of the outermost point over that of the innermost, and the dead zone's extent on
+// the line: from the outermost point in to the outermost one that moves at more than a tenth of
+// the innermost (0 when the outermost does).
 WallSpeedRatio wall_to_centre_speed_ratio(const SpeedProfile& line);
 
 // The line sampled through a run: the ratio of its time-averaged profile over a window (each

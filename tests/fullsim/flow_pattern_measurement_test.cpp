@@ -26,6 +26,10 @@ TEST(FlowPatternMeasurement, WallToCentreSpeedRatio) {
   EXPECT_EQ(wall_to_centre_speed_ratio(line(0.5, 5)).label(), "mass");
   EXPECT_EQ(wall_to_centre_speed_ratio(line(0.02, 5)).label(), "funnel");
   EXPECT_NEAR(wall_to_centre_speed_ratio(line(0.5, 5)).ratio, 0.5, 1e-15);
+  EXPECT_EQ(wall_to_centre_speed_ratio(line(0.5, 5)).stagnant_width, 0.0);  // all moves
+  // 1 -> 0.02 m/s over 0-40 mm: 0.1 m/s is reached at 36.7 mm, so the points at 40 mm (0.02)
+  // stand and the one at 30 mm (0.265) moves: a dead zone of 10 mm.
+  EXPECT_NEAR(wall_to_centre_speed_ratio(line(0.02, 5)).stagnant_width, 0.01, 1e-15);
   EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{}).measured);
   EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{{0.0, 0.1}, {0.0, 0.3}}).measured);
 }
