@@ -11,6 +11,7 @@ constexpr std::string_view kRemapOrders[] = {"first",           "second",
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
 constexpr std::string_view kHopperSections[] = {"half", "full"};
+constexpr std::string_view kYesNo[] = {"no", "yes"};
 // Simulated times and intervals: up to an hour (a DEM second takes minutes to hours).
 constexpr Range kTimeRange{0.0, 3600.0, false, true};
 }  // namespace
@@ -46,6 +47,11 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
                      "none (default: the normal force clipped at zero, as the seed's software) "
                      "or k_nc (the hysteretic law's -K_nc A2 delta branch of seed Eq. 7 pulls; "
                      "hysteretic laws only)",
+                     Presence::optional),
+      label_field<S>("force_time_step", &S::force_time_step, kYesNo,
+                     "yes: take time_step even above the stable step (e.g. the seed's 1 us, 15 "
+                     "steps per period of the stiffest spring instead of 20); the blow-up guard "
+                     "watches the run (default no: refused)",
                      Presence::optional),
   };
   return fields;

@@ -18,6 +18,7 @@ struct DemCaseSettings {
   std::optional<double> random_seed;        // [-] of the rain-fall insertion
   std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
   std::string cohesion;                     // empty: none (the normal force clipped at zero)
+  std::string force_time_step;              // "yes": time_step taken above the stable step
 };
 
 struct CelCaseSettings {

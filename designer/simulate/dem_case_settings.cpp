@@ -13,6 +13,7 @@ DemSettings dem_case_settings(const Case& c) {
   s.material = *c.material.dem;
   s.law = choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion);  // checked on loading
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
+  s.force_time_step = c.dem.force_time_step == "yes";
   if (c.dem.time_step_safety) s.stable_step_fraction = *c.dem.time_step_safety;
   return s;
 }
@@ -24,6 +25,12 @@ void require_slab_depth(const Case& c, const DemSettings& settings, double slab_
     throw InputError(c.file, "dem.slab_depth",
                      "the periodic slab must be at least two neighbour cutoffs deep (" +
                          format_number(2.0 * cutoff * 1e3, 3) + " mm for R = " + format_number(r * 1e3, 3) + " mm)");
+}
+
+void add_time_step_warning(const DemEngine& engine, std::vector<std::string>& assumptions) {
+  const std::string& warning = engine.time_step_choice().warning;
+  if (!warning.empty())
+    assumptions.push_back(warning.substr(warning.rfind("warning: ", 0) == 0 ? 9 : 0));
 }
 
 double dem_snapshot_interval(const Case& c, double duration, double sample_interval) {

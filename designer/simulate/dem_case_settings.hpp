@@ -1,7 +1,11 @@
 #pragma once
 // The DEM settings of a case for `feedflow simulate`: the material's Table 2 sets, the normal
-// law chosen by [dem] normal_law (+ history + cdt, the seed's composition), the time step of [dem] time_step (below the stable one:
-// warned; above it: refused by the engine unless forced).
+// law chosen by [dem] normal_law (+ history + cdt, the seed's composition), the time step of [dem]
+// time_step (below the stable one: warned; above it: refused by the engine unless [dem]
+// force_time_step = yes).
+#include <string>
+#include <vector>
+
 #include "designer/case/case.hpp"
 #include "fullsim/dem/dem_engine.hpp"
 
@@ -13,6 +17,10 @@ DemSettings dem_case_settings(const Case& c);
 // Throws InputError naming dem.slab_depth when a periodic slab is thinner than two neighbour
 // cutoffs of the settings' particles (a particle would meet its own image).
 void require_slab_depth(const Case& c, const DemSettings& settings, double slab_depth);
+
+// The engine's warning on its time step (a step forced above the stable one, or far below it),
+// added to a record's assumptions; nothing when the step is the stable one.
+void add_time_step_warning(const DemEngine& engine, std::vector<std::string>& assumptions);
 
 // The time between particle snapshots of a DEM scene run [s]: the case's [dem]
 // snapshot_interval, or by default the shortest of 1, 2, 5, 10, 20, 50, ... sample intervals

@@ -160,6 +160,7 @@ class DemChuteAdapter final : public SceneAdapter {
     auto& a = record.assumptions;
     a.push_back("DEM inclined plane: spheres of R = " + format_number(r * 1e3, 3) + " mm, Table 2 parameters, law " +
                 contact_law_name(e.effective_law()) + ", time step " + format_number(e.time_step() * 1e6, 3) + " us");
+    add_time_step_warning(e, a);
     a.push_back("periodic slab " + format_number(slab * 1e3, 3) + " mm deep standing for the " + format_number(chute_.width * 1e3, 3) +
                 " mm ramp (masses scale by " + format_number(chute_.width / slab, 3) + "); no side walls or lateral spill");
     a.push_back("the bin stands on the upper end of the ramp with its walls normal to it (the seed gives no drawing)");

@@ -204,6 +204,7 @@ class DemDrumAdapter final : public SceneAdapter {
     a.push_back("DEM drum: " + format_number(static_cast<double>(scene_.engine().particles().size()), 6) + " spheres of R = " +
                 format_number(r * 1e3, 3) + " mm, Table 2 parameters, law " + contact_law_name(scene_.engine().effective_law()) +
                 ", time step " + format_number(scene_.engine().time_step() * 1e6, 3) + " us");
+    add_time_step_warning(scene_.engine(), a);
     if (spec.slab_depth) {
       a.push_back("periodic axial slab " + format_number(*spec.slab_depth * 1e3, 3) + " mm deep standing for the " +
                   format_number(drum_.length * 1e3, 3) + " mm drum (masses scale by " + format_number(drum_.length / *spec.slab_depth, 3) +

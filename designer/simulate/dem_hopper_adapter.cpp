@@ -171,6 +171,7 @@ class DemHopperAdapter final : public SceneAdapter {
       a.push_back("normal contact law " + contact_law_name(scene_.settings.law) +
                   " instead of the seed's hysteretic one ([dem] normal_law)");
     if (!scene_.fill.settled) a.push_back("the fill had not settled below 1 mm/s when the gate opened");
+    add_time_step_warning(*engine_, a);
   }
 
  private:

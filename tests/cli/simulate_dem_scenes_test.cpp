@@ -234,6 +234,25 @@ TEST_F(SimulateDem, PlaneRestartContinuesTheSameSeries) {
             json.at("results").at("deposit_front").at("value").get<double>());
 }
 
+// A time step above the stable one (here 40 us against the twin's 32 us) is refused as bad input
+// naming dem.time_step and the stable step; with force_time_step = yes it is taken and the
+// plan says so.
+TEST_F(SimulateDem, StepAboveTheStableOneOnlyWhenForced) {
+  const std::string run = std::string("simulate cases/rotating_drum_20rpm.toml --solver dem -q") +
+                          kTwin + " --set dem.time_step=40us --time 0.02s";
+  const auto refused = run_feedflow(run + " --out refused", dir_);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("dem.time_step"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("exceeds the stable step 3.201e-05 s"), std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(fs::exists(dir_ / "refused" / "results.json"));
+  const auto forced = run_feedflow(run + " --set dem.force_time_step=yes --out forced", dir_);
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_NE(slurp(dir_ / "forced" / "results.json")
+                .find("user step 4e-05 s FORCED above the stable step"),
+            std::string::npos);
+}
+
 // A checkpoint continues only the case it was written for: a restart with another drum
 // diameter, speed or slab depth is refused as bad input (exit 2) naming the key and both values,
 // and writes nothing.
