@@ -1,5 +1,6 @@
 #include "designer/case/simulation_settings.hpp"
 
+#include "fullsim/dem/scene/slab_faces.hpp"
 #include "models/contact/contact_law_registry.hpp"
 
 namespace feedflow {
@@ -18,26 +19,35 @@ constexpr Range kTimeRange{0.0, 3600.0, false, true};
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
   using S = DemCaseSettings;
   static const FieldSpec<S> fields[] = {
-      optional_number_field<S>("slab_depth", &S::slab_depth, dim::length, "mm",
-                               Range{0.0, 1.0, false, true},
-                               "depth of the periodic slab (hopper 3 mm, chute 15 mm; drum: full length)"),
-      optional_number_field<S>("end_time", &S::end_time, dim::time, "s", kTimeRange,
-                               "simulated time after filling (default: until converged or stopped)"),
+      optional_number_field<S>(
+          "slab_depth", &S::slab_depth, dim::length, "mm", Range{0.0, 1.0, false, true},
+          "depth of the periodic slab (hopper 3 mm, chute 15 mm; drum: full length)"),
+      optional_number_field<S>(
+          "end_time", &S::end_time, dim::time, "s", kTimeRange,
+          "simulated time after filling (default: until converged or stopped)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between particle snapshots"),
-      optional_number_field<S>("time_step", &S::time_step, dim::time, "us", Range{0.0, 1.0, false, true},
-                               "time step instead of the stable one (smaller: warned)"),
-      optional_number_field<S>("time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
+      optional_number_field<S>("time_step", &S::time_step, dim::time, "us",
                                Range{0.0, 1.0, false, true},
-                               "fraction of the stable step (models.md 5.1: 20 steps per period of the "
-                               "stiffest spring, 0.2 Rayleigh and Hertz times); above 1 the contacts are "
-                               "not resolved"),
+                               "time step instead of the stable one (smaller: warned)"),
+      optional_number_field<S>(
+          "time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
+          Range{0.0, 1.0, false, true},
+          "fraction of the stable step (models.md 5.1: 20 steps per period of the "
+          "stiffest spring, 0.2 Rayleigh and Hertz times); above 1 the contacts are "
+          "not resolved"),
       whole_number(optional_number_field<S>("random_seed", &S::random_seed, dim::dimensionless, "-",
                                             Range::closed(0.0, 4294967295.0),
                                             "seed of the rain-fall insertion (a whole number)")),
       label_field<S>("normal_law", &S::normal_law, NormalParts::kKeywords,
                      "normal contact law (default the seed's hysteretic_nonlinear2; hertz allows "
                      "a ~20x larger time step for reduced test twins)",
+                     Presence::optional),
+      label_field<S>("slab_faces", &S::slab_faces, slab_face_keywords(),
+                     "front and back faces of a DEM slab: frictional (the particle-wall set), "
+                     "frictionless (no sliding or rolling resistance) or periodic (at least two "
+                     "neighbour cutoffs deep); default periodic when deep enough, else "
+                     "frictional (drum and chute slabs are periodic only)",
                      Presence::optional),
   };
   return fields;

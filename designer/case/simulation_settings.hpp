@@ -17,6 +17,7 @@ struct DemCaseSettings {
   std::optional<double> time_step_safety;   // [-] fraction of the stable step, (0, 1]
   std::optional<double> random_seed;        // [-] of the rain-fall insertion
   std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
+  std::string slab_faces;                   // empty: periodic when deep enough, else frictional
 };
 
 struct CelCaseSettings {

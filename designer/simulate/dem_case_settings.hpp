@@ -4,6 +4,7 @@
 // warned; above it: refused by the engine unless forced).
 #include "designer/case/case.hpp"
 #include "fullsim/dem/dem_engine.hpp"
+#include "fullsim/dem/scene/slab_faces.hpp"
 
 namespace feedflow {
 
@@ -13,6 +14,12 @@ DemSettings dem_case_settings(const Case& c);
 // Throws InputError naming dem.slab_depth when a periodic slab is thinner than two neighbour
 // cutoffs of the settings' particles (a particle would meet its own image).
 void require_slab_depth(const Case& c, const DemSettings& settings, double slab_depth);
+
+// The case's [dem] slab_faces (automatic when absent).
+SlabFaces slab_faces_of(const Case& c);
+// For a scene whose slab is periodic only (drum, chute): throws InputError naming
+// dem.slab_faces when the case asks for frictional or frictionless faces.
+void require_periodic_faces(const Case& c, const std::string& scene);
 
 // The time between particle snapshots of a DEM scene run [s]: the case's [dem]
 // snapshot_interval, or by default the shortest of 1, 2, 5, 10, 20, 50, ... sample intervals
