@@ -6,6 +6,8 @@
 // tests/data/peers/hopper_slab_liggghts.csv.
 #include <gtest/gtest.h>
 
+#include <stdlib.h>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -104,6 +106,9 @@ double discharged_at(const std::string& csv, double t) {
 // rate within 5 % (per slab, kg/s), from the same fill (rain seed 1): our steady rate, and our
 // mean rate over the peer's steady window.
 TEST_F(HopperSlabPeerTwin, LONG_PilotSlabDischargesAsLiggghts) {
+  // One thread, as the run whose fill the peer started from (a run is the same to the bit for
+  // a given thread count).
+  setenv("OMP_NUM_THREADS", "1", 1);
   const auto r = run_feedflow(
       "simulate cases/pilot_hopper.toml --solver dem -q --set dem.normal_law=hertz "
       "--set dem.slab_depth=3.3mm --set dem.slab_faces=frictionless --out run",
