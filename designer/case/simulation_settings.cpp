@@ -1,5 +1,6 @@
 #include "designer/case/simulation_settings.hpp"
 
+#include "fullsim/dem/scene/slab_faces.hpp"
 #include "models/contact/contact_law_registry.hpp"
 
 namespace feedflow {
@@ -52,6 +53,12 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
                      "yes: take time_step even above the stable step (e.g. the seed's 1 us, 15 "
                      "steps per period of the stiffest spring instead of 20); the blow-up guard "
                      "watches the run (default no: refused)",
+                     Presence::optional),
+      label_field<S>("slab_faces", &S::slab_faces, slab_face_keywords(),
+                     "front and back faces of a DEM slab: frictional (the particle-wall set), "
+                     "frictionless (no sliding or rolling resistance) or periodic (at least two "
+                     "neighbour cutoffs deep); default periodic when deep enough, else "
+                     "frictional (drum and chute slabs are periodic only)",
                      Presence::optional),
   };
   return fields;

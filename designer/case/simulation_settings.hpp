@@ -19,6 +19,7 @@ struct DemCaseSettings {
   std::string normal_law;                   // empty: the seed's (hysteretic_nonlinear2)
   std::string cohesion;                     // empty: none (the normal force clipped at zero)
   std::string force_time_step;              // "yes": time_step taken above the stable step
+  std::string slab_faces;                   // empty: periodic when deep enough, else frictional
 };
 
 struct CelCaseSettings {

@@ -33,6 +33,24 @@ void add_time_step_warning(const DemEngine& engine, std::vector<std::string>& as
     assumptions.push_back(warning.substr(warning.rfind("warning: ", 0) == 0 ? 9 : 0));
 }
 
+SlabFaces slab_faces_of(const Case& c) {
+  const auto faces = slab_faces_from_keyword(c.dem.slab_faces);
+  if (!faces)
+    throw InputError(c.file, "dem.slab_faces",
+                     "\"frictional\", \"frictionless\" or \"periodic\", not \"" + c.dem.slab_faces +
+                         "\"");
+  return *faces;
+}
+
+void require_periodic_faces(const Case& c, const std::string& scene) {
+  const SlabFaces faces = slab_faces_of(c);
+  if (faces == SlabFaces::frictional || faces == SlabFaces::frictionless)
+    throw InputError(c.file, "dem.slab_faces",
+                     "the DEM " + scene +
+                         " slab is periodic (its walls are the scene's own); \"periodic\" "
+                         "or leave the key out");
+}
+
 double dem_snapshot_interval(const Case& c, double duration, double sample_interval) {
   if (c.dem.snapshot_interval) return *c.dem.snapshot_interval;
   constexpr double kMostSnapshots = 50.0;

@@ -8,6 +8,7 @@
 
 #include "designer/case/case.hpp"
 #include "fullsim/dem/dem_engine.hpp"
+#include "fullsim/dem/scene/slab_faces.hpp"
 
 namespace feedflow {
 
@@ -21,6 +22,12 @@ void require_slab_depth(const Case& c, const DemSettings& settings, double slab_
 // The engine's warning on its time step (a step forced above the stable one, or far below it),
 // added to a record's assumptions; nothing when the step is the stable one.
 void add_time_step_warning(const DemEngine& engine, std::vector<std::string>& assumptions);
+
+// The case's [dem] slab_faces (automatic when absent).
+SlabFaces slab_faces_of(const Case& c);
+// For a scene whose slab is periodic only (drum, chute): throws InputError naming
+// dem.slab_faces when the case asks for frictional or frictionless faces.
+void require_periodic_faces(const Case& c, const std::string& scene);
 
 // The time between particle snapshots of a DEM scene run [s]: the case's [dem]
 // snapshot_interval, or by default the shortest of 1, 2, 5, 10, 20, 50, ... sample intervals

@@ -28,6 +28,7 @@ InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
   spec.gate_opening = chute.gate_opening;
   spec.slab_depth = c.dem.slab_depth.value_or(kDefaultSlab);
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
+  require_periodic_faces(c, "inclined-plane");
   require_slab_depth(c, settings, spec.slab_depth);
   return spec;
 }

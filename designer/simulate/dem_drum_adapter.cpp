@@ -39,6 +39,11 @@ DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
   spec.speed = drum.speed;
   spec.slab_depth = c.dem.slab_depth;
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
+  require_periodic_faces(c, "drum");
+  if (slab_faces_of(c) == SlabFaces::periodic && !spec.slab_depth)
+    throw InputError(c.file, "dem.slab_faces",
+                     "periodic faces need a [dem] slab_depth (without it the drum runs its full "
+                     "length between its end walls)");
   if (spec.slab_depth) require_slab_depth(c, settings, *spec.slab_depth);
   return spec;
 }

@@ -160,6 +160,7 @@ class DemHopperAdapter final : public SceneAdapter {
     a.push_back("walls: a finite triangle-mesh wedge and analytic bin planes with the particle-wall "
                 "Table 2 set; the outlet is opened by removing the gate plane once the fill has "
                 "settled (the rig slides its side walls up)");
+    a.push_back("slab faces ([dem] slab_faces): " + scene_.slab.describe_faces());
     a.push_back("filling: rain-fall following the fill top, settled to 1 mm/s or 0.5 s, trimmed at "
                 "H; particles are deleted 5 R below the outlet (their mass is booked)");
     a.push_back("the run ends when the steady rate's 95 % interval is within +-5 %, the hopper "

@@ -21,6 +21,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
   const double r = c.material.dem->particle.radius;
   s.slab = WedgeHopperSlab{h.semi_angle, h.outlet_width, h.bin_width, h.fill_height,
                            c.dem.slab_depth.value_or(2.0 * r), r, s.settings.skin_fraction};
+  s.slab.faces = slab_faces_of(c);
   s.slab.check();
   if (!h.slot_length) throw InputError(c.file, "hopper.slot_length", "the wedge needs its slot length");
   s.slot_length = *h.slot_length;
@@ -40,6 +41,7 @@ void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
   f.set_attribute("/scene", "sunk_count", static_cast<std::int64_t>(s.fill.sunk_count));
   f.set_attribute("/scene", "settled", static_cast<std::int64_t>(s.fill.settled));
   f.set_attribute("/scene", "slab_depth", s.slab.depth);
+  f.set_attribute("/scene", "slab_faces", std::string(to_string(s.slab.built_faces())));
   f.write("/scene/initial_ids", s.initial_ids, {s.initial_ids.size()}, "");
   f.write("/scene/initial_layers", s.initial_layers, {s.initial_layers.size()}, "");
 }
@@ -49,6 +51,11 @@ void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
     throw InputError("--restart", "", f.path().string() + " is not a checkpoint of a DEM hopper scene");
   if (f.double_attribute("/scene", "slab_depth") != s.slab.depth)
     throw InputError("--restart", "", "the checkpoint's slab depth differs from the case's [dem] slab_depth");
+  if (f.string_attribute("/scene", "slab_faces") != to_string(s.slab.built_faces()))
+    throw InputError("--restart", "",
+                     "the checkpoint's slab faces are " +
+                         f.string_attribute("/scene", "slab_faces") +
+                         ", the case's [dem] slab_faces give " + to_string(s.slab.built_faces()));
   s.opening_time = f.double_attribute("/scene", "opening_time");
   s.opening_step = static_cast<long>(f.integer_attribute("/scene", "opening_step"));
   s.fill.inserted_mass = f.double_attribute("/scene", "inserted_mass");

@@ -110,6 +110,7 @@ void write_contents(Hdf5File& f, const DemCheckpoint& c) {
     f.set_attribute(g, "particles_inside", static_cast<std::int64_t>(w.particles_inside()));
     set_quantity(f, g, "radius", w.radius(), "m");
     set_quantity(f, g, "removal_time", w.removal_time(), "s");
+    f.set_attribute(g, "contact_set", std::string(to_string(w.contact_set())));
     write_vec3(f, g + "/point", w.point(), "m");
     write_vec3(f, g + "/direction", w.direction(), "1");
     write_vec3(f, g + "/velocity", w.velocity(), "m/s");
@@ -237,6 +238,13 @@ DemCheckpoint read_contents(const Hdf5File& f) {
                  ? Wall::cylinder(name, point, direction, f.double_attribute(g, "radius"),
                                   f.integer_attribute(g, "particles_inside") != 0)
                  : (refuse("wall " + g + " has an unknown shape '" + shape + "'"), Wall());
+    const std::string set = f.string_attribute(g, "contact_set");
+    if (set != to_string(WallContactSet::particle_wall) &&
+        set != to_string(WallContactSet::frictionless))
+      refuse("wall " + g + " has an unknown contact set '" + set + "'");
+    w.with_contact_set(set == to_string(WallContactSet::frictionless)
+                           ? WallContactSet::frictionless
+                           : WallContactSet::particle_wall);
     w.moving(read_vec3(f, g + "/velocity"), read_vec3(f, g + "/angular_velocity"))
         .removed_at(f.double_attribute(g, "removal_time"))
         .placed(point, direction);

@@ -3,12 +3,12 @@
 // HDF5 file (format name and version on the root, units on every dataset and quantity):
 // the particles in their current slot order (with forces, torques and wall-contact history),
 // the neighbour list as it stands (entries, id pairs, contact history, positions at the last
-// rebuild, rebuild counter that schedules the Morton re-sort), the walls' current pose and
-// motion, the outlet sink's booked mass and events, the box, the step, the time, the time step
-// and the blow-up guard's energy book (with the wall speed its floor allows for). Written whole
-// or not at all (a temporary beside the target, renamed over it). A file of another format or
-// version, a truncated or inconsistent one is refused with a std::runtime_error naming the file
-// and what is wrong.
+// rebuild, rebuild counter that schedules the Morton re-sort), the walls' current pose,
+// motion and contact set, the outlet sink's booked mass and events, the box, the step, the time,
+// the time step and the blow-up guard's energy book (with the wall speed its floor allows for).
+// Written whole or not at all (a temporary beside the target, renamed over it). A file of another
+// format or version, a truncated or inconsistent one is refused with a std::runtime_error naming
+// the file and what is wrong.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -24,7 +24,8 @@
 namespace feedflow {
 
 // Version 2: the guard's book holds the wall speed its floor allows for (/guard wall_speed).
-constexpr std::int64_t kDemCheckpointVersion = 2;
+// Version 3: each analytic wall names its contact set (/walls/NNNN contact_set).
+constexpr std::int64_t kDemCheckpointVersion = 3;
 inline constexpr const char* kDemCheckpointFormat = "feedflow DEM checkpoint";
 
 struct DemCheckpoint {

@@ -9,6 +9,10 @@
 
 namespace feedflow {
 
+const char* to_string(WallContactSet set) {
+  return set == WallContactSet::frictionless ? "frictionless" : "particle_wall";
+}
+
 Wall Wall::plane(std::string name, const Vec3& point, const Vec3& normal) {
   if (!(normal.norm() > 0.0)) throw InputError("", "wall." + name, "plane normal is zero");
   Wall w;
@@ -78,6 +82,8 @@ std::string Wall::describe() const {
                   name_.c_str(), radius_, direction_.x(), direction_.y(), direction_.z(),
                   inside_ ? "inside" : "outside");
   std::string s = buf;
+  if (contact_set_ == WallContactSet::frictionless)
+    s += ", frictionless (P-W normal law and damping, no sliding or rolling resistance)";
   return s + wall_motion_text(velocity_, angular_velocity_, removal_time_);
 }
 

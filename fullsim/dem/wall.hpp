@@ -2,7 +2,9 @@
 // Analytic walls: an infinite plane (particles on the side its normal points to) and a
 // cylinder (particles inside or outside). A wall may move rigidly with a linear velocity and
 // an angular velocity about a centre (a drum turns about its axis), and may be removed at a
-// given time (a gate lifted). Its contacts use the particle-wall parameter set.
+// given time (a gate lifted). Its contacts use the particle-wall parameter set, or that set
+// without sliding and rolling resistance (a frictionless face: the normal law and its damping
+// as P-W, no tangential force, no rolling torque).
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,6 +14,11 @@
 namespace feedflow {
 
 enum class WallShape { plane, cylinder };
+
+// The contact parameters of a wall: the particle-wall Table 2 set, or the same set with zero
+// sliding and rolling friction (a frictionless face).
+enum class WallContactSet { particle_wall, frictionless };
+const char* to_string(WallContactSet set);
 
 // Where a sphere touches a wall.
 struct WallTouch {
@@ -33,6 +40,11 @@ class Wall {
   Wall& moving(const Vec3& velocity, const Vec3& angular_velocity);
   // The wall is gone from time `t` on.
   Wall& removed_at(double t);
+  // Its contacts take `set` (default: the particle-wall set).
+  Wall& with_contact_set(WallContactSet set) {
+    contact_set_ = set;
+    return *this;
+  }
   // Sets the current point and direction as they are (restoring a checkpoint: no
   // normalisation, so a restarted run sees the same bits).
   Wall& placed(const Vec3& point, const Vec3& direction) {
@@ -52,6 +64,7 @@ class Wall {
   bool moves() const { return velocity_.squaredNorm() > 0.0 || angular_velocity_.squaredNorm() > 0.0; }
   bool active(double t) const { return t < removal_time_; }
   double removal_time() const { return removal_time_; }
+  WallContactSet contact_set() const { return contact_set_; }
   std::string describe() const;
 
   // Advances the rigid motion by dt.
@@ -88,6 +101,7 @@ class Wall {
   Vec3 velocity_ = Vec3::Zero();
   Vec3 angular_velocity_ = Vec3::Zero();
   double removal_time_ = std::numeric_limits<double>::infinity();
+  WallContactSet contact_set_ = WallContactSet::particle_wall;
 };
 
 // ", moving v = (...) m/s, omega = (...) rad/s, removed at t = ... s" for a wall's plan line;

@@ -1,7 +1,8 @@
 #pragma once
-// The particle-wall contacts of one composed contact law with the P-W parameter set: analytic
-// walls (one history per particle and wall) and triangle meshes (MeshWall::kMaxContacts slots
-// per particle and mesh, each a normal and a history, matched by normal from step to step).
+// The particle-wall contacts of one composed contact law with the P-W parameter set (an analytic
+// wall may instead take that set without sliding and rolling friction, a frictionless face):
+// analytic walls (one history per particle and wall) and triangle meshes (MeshWall::kMaxContacts
+// slots per particle and mesh, each a normal and a history, matched by normal from step to step).
 // Each contact touches only its own particle, so threads may run their own rows at once.
 #include <algorithm>
 #include <array>
@@ -37,7 +38,8 @@ class WallContactForces {
   using History = typename Law::History;
   static constexpr std::size_t kHistory = Law::kHistorySize;
 
-  explicit WallContactForces(const DemContactParameters& particle_wall) : law_(particle_wall) {}
+  explicit WallContactForces(const DemContactParameters& particle_wall)
+      : law_(particle_wall), frictionless_law_(without_friction(particle_wall)) {}
 
   // The particle-wall contacts of the particles in slots [begin, end), each touching only its
   // own particle (so a thread may run its own rows while another runs its own).
@@ -65,8 +67,10 @@ class WallContactForces {
           continue;
         }
         const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
-        const double ratio = apply_wall_contact(p, i, touch.gap, touch.normal, surface_velocity,
-                                                wall.angular_velocity(), c.dt, h);
+        const Law& law =
+            wall.contact_set() == WallContactSet::frictionless ? frictionless_law_ : law_;
+        const double ratio = apply_wall_contact(law, p, i, touch.gap, touch.normal,
+                                                surface_velocity, wall.angular_velocity(), c.dt, h);
         if (ratio > worst.ratio) worst = {ratio, i, true};
       }
       for (std::size_t m = 0; m < meshes; ++m) {
@@ -106,10 +110,9 @@ class WallContactForces {
           slot[0] = touch[q].normal.x();
           slot[1] = touch[q].normal.y();
           slot[2] = touch[q].normal.z();
-          const double ratio =
-              apply_wall_contact(p, i, touch[q].gap, touch[q].normal,
-                                 mesh.surface_velocity(touch[q].point),
-                                 mesh.angular_velocity(), c.dt, slot + 3);
+          const double ratio = apply_wall_contact(law_, p, i, touch[q].gap, touch[q].normal,
+                                                  mesh.surface_velocity(touch[q].point),
+                                                  mesh.angular_velocity(), c.dt, slot + 3);
           if (ratio > worst.ratio) worst = {ratio, i, true};
         }
       }
@@ -118,13 +121,18 @@ class WallContactForces {
   }
 
  private:
+  // The P-W set with no sliding and no rolling friction (normal law and damping kept).
+  static DemContactParameters without_friction(DemContactParameters set) {
+    set.friction = 0.0;
+    set.rolling_friction = 0.0;
+    return set;
+  }
 
- private:
-  // One particle-wall contact with the P-W set: adds its force and torque to particle i and
-  // returns the overlap over the radius.
-  double apply_wall_contact(ParticleStore& p, std::size_t i, double gap, const Vec3& normal,
-                            const Vec3& surface_velocity, const Vec3& wall_angular_velocity,
-                            double dt, double* h) {
+  // One particle-wall contact with `law` (its parameter set): adds its force and torque to
+  // particle i and returns the overlap over the radius.
+  double apply_wall_contact(const Law& law, ParticleStore& p, std::size_t i, double gap,
+                            const Vec3& normal, const Vec3& surface_velocity,
+                            const Vec3& wall_angular_velocity, double dt, double* h) {
     const double ri = p.radius[i];
     const double overlap = ri - gap;
     ContactInput in;
@@ -142,7 +150,7 @@ class WallContactForces {
     in.dt = dt;
     History hist;
     if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-    const ContactOutput out = law_.evaluate(in, hist);
+    const ContactOutput out = law.evaluate(in, hist);
     if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
     p.force[i] += out.normal_force * in.normal + out.tangential_force;
     p.torque[i] += out.rolling_torque - ci * in.normal.cross(out.tangential_force);
@@ -157,7 +165,8 @@ class WallContactForces {
       }
   }
 
-  Law law_;
+  Law law_;               // the P-W set
+  Law frictionless_law_;  // the P-W set without sliding and rolling friction
 };
 
 }  // namespace feedflow

@@ -25,7 +25,14 @@ double WedgeHopperSlab::fill_top() const { return fill_height - apex_depth(); }
 double WedgeHopperSlab::half_width(double z) const {
   return z < bin_bottom() ? 0.5 * outlet_width + z * std::tan(semi_angle) : 0.5 * bin_width;
 }
-bool WedgeHopperSlab::periodic() const { return depth >= 4.0 * radius * (1.0 + skin_fraction); }
+bool WedgeHopperSlab::periodic() const {
+  return faces == SlabFaces::periodic ||
+         (faces == SlabFaces::automatic && depth >= 4.0 * radius * (1.0 + skin_fraction));
+}
+SlabFaces WedgeHopperSlab::built_faces() const {
+  if (periodic()) return SlabFaces::periodic;
+  return faces == SlabFaces::frictionless ? SlabFaces::frictionless : SlabFaces::frictional;
+}
 double WedgeHopperSlab::wall_top() const { return fill_top() + 0.1; }
 
 void WedgeHopperSlab::check() const {
@@ -37,6 +44,16 @@ void WedgeHopperSlab::check() const {
   if (!(bin_width > outlet_width)) bad("hopper.bin_width", "the DEM wedge needs a bin wider than the outlet");
   if (!(fill_top() > 4.0 * radius)) bad("hopper.fill_height", "the fill ends below the outlet plane");
   if (!(depth >= 2.0 * radius)) bad("dem.slab_depth", "the slab must hold one particle layer (>= 2 R)");
+  const double cutoff = 2.0 * radius * (1.0 + skin_fraction);
+  if (faces == SlabFaces::periodic && depth < 2.0 * cutoff) {
+    char what[200];
+    std::snprintf(
+        what, sizeof what,
+        "periodic faces need a slab at least two neighbour cutoffs deep (%.4g mm); "
+        "this one is %.4g mm ([dem] slab_depth; or choose \"frictional\" or \"frictionless\")",
+        2e3 * cutoff, 1e3 * depth);
+    bad("dem.slab_faces", what);
+  }
 }
 
 SimulationBox WedgeHopperSlab::box() const {
@@ -86,8 +103,11 @@ void WedgeHopperSlab::add_walls(DemEngine& engine) const {
   engine.add_wall(Wall::plane("bin left", Vec3(-b, 0, 0), Vec3::UnitX()));
   engine.add_wall(Wall::plane("bin right", Vec3(b, 0, 0), -Vec3::UnitX()));
   if (!periodic()) {
-    engine.add_wall(Wall::plane("front", Vec3(0, 0, 0), Vec3::UnitY()));
-    engine.add_wall(Wall::plane("back", Vec3(0, depth, 0), -Vec3::UnitY()));
+    const WallContactSet set = built_faces() == SlabFaces::frictionless
+                                   ? WallContactSet::frictionless
+                                   : WallContactSet::particle_wall;
+    engine.add_wall(Wall::plane("front", Vec3(0, 0, 0), Vec3::UnitY()).with_contact_set(set));
+    engine.add_wall(Wall::plane("back", Vec3(0, depth, 0), -Vec3::UnitY()).with_contact_set(set));
   }
   engine.add_wall(Wall::plane("gate", Vec3(0, 0, 0), Vec3::UnitZ()));
   engine.set_outlet_sink(OutletSink::plane(Vec3(0, 0, sink_height()), -Vec3::UnitZ()));
@@ -144,21 +164,32 @@ RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t 
   return s;
 }
 
+std::string WedgeHopperSlab::describe_faces() const {
+  const SlabFaces built = built_faces();
+  std::string s = built == SlabFaces::periodic ? "periodic front/back"
+                  : built == SlabFaces::frictionless
+                      ? "frictionless front and back planes (P-W normal law and damping, no "
+                        "sliding or rolling resistance)"
+                      : "front and back planes with the particle-wall friction";
+  if (faces == SlabFaces::automatic)
+    s += " (slab_faces by default: periodic from two cutoffs deep)";
+  if (built != SlabFaces::periodic && depth < 2.0 * radius * (1.0 + 1e-3))
+    s += "; one layer whose centres in the mid-plane stay there, so the faces carry no load (as "
+         "the seed's periodic 3 mm slab)";
+  else if (built == SlabFaces::frictional)
+    s += "; errs towards arching and a lower rate";
+  return s;
+}
+
 std::string WedgeHopperSlab::describe() const {
   char buf[600];
   std::snprintf(buf, sizeof buf,
                 "  hopper slab: wedge theta = %.4g deg, outlet W = %.4g mm, bin B = %.4g mm, fill "
                 "H = %.4g m above the apex (%.4g m above the outlet), wedge-bin transition at "
-                "%.4g m, slab depth %.4g mm (%s)\n",
+                "%.4g m, slab depth %.4g mm\n",
                 in_degrees(semi_angle), outlet_width * 1e3, bin_width * 1e3, fill_height,
-                fill_top(), bin_bottom(), depth * 1e3,
-                periodic()              ? "periodic front/back"
-                : depth < 2.0 * radius * (1.0 + 1e-3)
-                    ? "one layer between front and back planes; centres in the mid-plane stay "
-                      "there, so these carry no load (as the seed's periodic 3 mm slab)"
-                    : "front and back planes with the particle-wall friction (errs towards "
-                      "arching)");
-  return buf;
+                fill_top(), bin_bottom(), depth * 1e3);
+  return buf + ("  slab faces: " + describe_faces() + "\n");
 }
 
 }  // namespace feedflow

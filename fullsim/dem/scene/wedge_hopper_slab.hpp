@@ -8,16 +8,18 @@
 // is an analytic plane over the outlet, removed at the opening time ("removing the lower wall
 // sections"); the outlet sink takes every particle that has fallen 5 R below the outlet.
 //
-// Slab depth D: one layer of spheres when D < 2 x the neighbour cutoff, with front and back
-// planes at y = 0 and y = D; for D = 2 R the centres are inserted in the mid-plane, and since
-// every contact normal then lies in the x-z plane the particles stay there and never touch
-// the front and back (they stand in for the seed's periodic/frictionless faces). A deeper
-// slab is periodic in y.
+// Slab depth D and faces (slab_faces.hpp): by default one layer of spheres when D < 2 x the
+// neighbour cutoff, with frictional front and back planes at y = 0 and y = D, and a deeper slab
+// periodic in y; for D = 2 R the centres are inserted in the mid-plane, and since every contact
+// normal then lies in the x-z plane the particles stay there and never touch the front and back
+// (they stand in for the seed's periodic/frictionless faces). The faces may be chosen instead:
+// frictional or frictionless planes at any depth, periodic from two neighbour cutoffs on.
 #include <functional>
 #include <string>
 
 #include "fullsim/dem/dem_engine.hpp"
 #include "fullsim/dem/scene/rain_fill.hpp"
+#include "fullsim/dem/scene/slab_faces.hpp"
 
 namespace feedflow {
 
@@ -29,16 +31,21 @@ struct WedgeHopperSlab {
   double depth = 0.0;          // D [m]
   double radius = 0.0;         // particle radius [m]
   double skin_fraction = 0.3;  // of the engine (decides whether the slab can be periodic)
+  SlabFaces faces = SlabFaces::automatic;  // front and back faces
 
   double apex_depth() const;   // the virtual apex below the outlet plane [m]
   double bin_bottom() const;   // height of the wedge-bin transition above the outlet [m]
   double fill_top() const;     // height of the fill surface above the outlet (H - apex) [m]
   double half_width(double z) const;  // of the container at height z [m]
-  bool periodic() const;       // a periodic slab (D >= 2 x the neighbour cutoff)
+  bool periodic() const;  // a periodic slab (chosen, or automatic and D >= 2 x the cutoff)
+  // The faces as built: frictional, frictionless or periodic (automatic resolved).
+  SlabFaces built_faces() const;
+  std::string describe_faces() const;  // what the faces are and what they carry, for plans
   double sink_height() const { return -5.0 * radius; }
   double wall_top() const;     // the bin walls reach this high (room for the rain) [m]
   SimulationBox box() const;
-  // The walls (named "wedge", "bin left/right", "front", "back", "gate") and the sink.
+  // The walls (named "wedge", "bin left/right", "front", "back", "gate") and the sink; the
+  // front and back take the frictionless contact set for frictionless faces.
   void add_walls(DemEngine& engine) const;
   // The inclined and bin walls in the slab's mid-plane, for pictures (the gate left out).
   SceneOutline outline() const;

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "models/core/errors.hpp"
@@ -124,6 +126,59 @@ TEST(DemBoundaries, TranslatingFloorCarriesTheSphere) {
   EXPECT_NEAR(floor, 0.01, 1e-4);
   EXPECT_NEAR(e.particles().position[0].z(), floor + kRadius, 1e-5);
   EXPECT_NEAR(e.particles().velocity[0].z(), 0.1, 1e-2);
+}
+
+// The force and torque a face puts on a sphere pressed against it by its weight (gravity along
+// -y onto the plane y = 0) while sliding along x and spinning about z: after 0.02 s of sliding,
+// the contact's share of the particle's force and its torque.
+struct FaceContact {
+  Vec3 force;   // contact force on the sphere [N]
+  Vec3 torque;  // [N m]
+  Vec3 velocity, angular_velocity;
+  std::string plan;
+};
+FaceContact slide_on_face(WallContactSet set) {
+  DemSettings s = hertz_settings(0.3, 0.5, 0.8);
+  s.material.particle_wall = soft_contact(0.3, 0.2, 0.6);
+  s.gravity = Vec3(0.0, -9.81, 0.0);
+  ParticleStore p;
+  p.add(Vec3(0.01, kRadius, 0.01), kRadius, kDensity, 0, Vec3(0.5, 0.0, 0.0));
+  p.angular_velocity[0] = Vec3(0.0, 0.0, 50.0);
+  SimulationBox box{Vec3::Zero(), Vec3(0.2, 0.02, 0.02), {false, false, false}};
+  DemEngine e(s, box, p);
+  e.add_wall(Wall::plane("face", Vec3::Zero(), Vec3::UnitY()).with_contact_set(set));
+  std::ostringstream plan;
+  e.prepare(plan);
+  e.advance_to(0.02);
+  const ParticleStore& q = e.particles();
+  return {q.force[0] - q.mass[0] * s.gravity, q.torque[0], q.velocity[0], q.angular_velocity[0],
+          plan.str()};
+}
+
+// A frictionless face carries the normal load only: a sphere sliding and spinning on it feels
+// no tangential force and no rolling torque (its slip speed and spin stay exactly as launched),
+// while on the frictional P-W face it slides on its Coulomb limit |F_t| = mu F_n (mu = 0.2)
+// and is spun down.
+TEST(DemBoundaries, FrictionlessFaceCarriesNoTangentialForceOrTorque) {
+  const FaceContact smooth = slide_on_face(WallContactSet::frictionless);
+  EXPECT_NE(smooth.plan.find("frictionless"), std::string::npos) << smooth.plan;
+  EXPECT_NEAR(smooth.force.y(),
+              kDensity * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3) * 9.81,
+              0.05 * smooth.force.y());  // resting on the face under its weight
+  EXPECT_EQ(smooth.force.x(), 0.0);
+  EXPECT_EQ(smooth.force.z(), 0.0);
+  EXPECT_EQ(smooth.torque.norm(), 0.0);
+  EXPECT_EQ(smooth.velocity.x(), 0.5);
+  EXPECT_EQ(smooth.angular_velocity.z(), 50.0);
+
+  const FaceContact rough = slide_on_face(WallContactSet::particle_wall);
+  EXPECT_EQ(rough.plan.find("frictionless"), std::string::npos);
+  const double fn = rough.force.y();
+  EXPECT_GT(fn, 0.0);
+  EXPECT_NEAR(std::hypot(rough.force.x(), rough.force.z()), 0.2 * fn, 1e-9 * fn);
+  EXPECT_LT(rough.force.x(), 0.0);  // against the slip
+  EXPECT_GT(rough.torque.norm(), 0.0);
+  EXPECT_LT(rough.velocity.x(), 0.5);
 }
 
 // A step far above the stable one is refused; forced, the blow-up guard stops the run with

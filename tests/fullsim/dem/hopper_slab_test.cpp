@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "fullsim/dem/scene/wedge_hopper_slab.hpp"
+#include "models/core/errors.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
 #include "tests/support/pine_table2.hpp"
@@ -81,6 +82,41 @@ TEST(WedgeHopperSlab, PilotGeometry) {
   EXPECT_NEAR(h.bin_bottom(), 0.4677, 1e-4);
   EXPECT_NEAR(h.fill_top(), 0.6280, 1e-4);
   EXPECT_FALSE(h.periodic());
+}
+
+// The slab faces reach the walls: by default a 3.3 mm pilot slab has frictional front and back
+// planes (today's rule), "frictionless" gives the same planes with the frictionless contact set,
+// "periodic" a periodic y axis and no planes; periodic faces on a slab thinner than two cutoffs
+// are refused naming dem.slab_faces.
+TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
+  WedgeHopperSlab h{30.0 * std::numbers::pi / 180.0, 0.06, 0.6, 0.68, 3.3e-3, 1.5e-3, 0.3};
+  auto faces = [&](SlabFaces f) {
+    h.faces = f;
+    h.check();
+    DemEngine e(twin_settings(), h.box(), ParticleStore{});
+    h.add_walls(e);
+    std::vector<WallContactSet> sets;
+    for (const Wall& w : e.walls())
+      if (w.name() == "front" || w.name() == "back") sets.push_back(w.contact_set());
+    return std::make_pair(sets, e.box().periodic[1]);
+  };
+  using Sets = std::vector<WallContactSet>;
+  const Sets rough{WallContactSet::particle_wall, WallContactSet::particle_wall};
+  const Sets smooth{WallContactSet::frictionless, WallContactSet::frictionless};
+  EXPECT_EQ(faces(SlabFaces::automatic), std::make_pair(rough, false));
+  EXPECT_EQ(faces(SlabFaces::frictional), std::make_pair(rough, false));
+  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_pair(smooth, false));
+  EXPECT_NE(h.describe().find("frictionless front and back planes"), std::string::npos);
+  try {
+    faces(SlabFaces::periodic);
+    FAIL() << "a periodic 3.3 mm slab of 1.5 mm spheres was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dem.slab_faces"), std::string::npos) << e.what();
+  }
+  h.depth = 12e-3;
+  EXPECT_EQ(faces(SlabFaces::periodic), std::make_pair(Sets{}, true));
+  EXPECT_EQ(faces(SlabFaces::automatic), std::make_pair(Sets{}, true));
+  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_pair(smooth, false));
 }
 
 }  // namespace
