@@ -13,23 +13,13 @@
 #include "models/contact/contact_law.hpp"
 #include "models/contact/hysteretic_nonlinear2.hpp"
 #include "tests/models/contact/single_contact_rig.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
 
 // Table 2 (P-P) of the seed, as the DEM scenes use it.
-DemContactParameters pine() {
-  DemContactParameters p;
-  p.alpha_prime = 20;
-  p.chi = 2;
-  p.a1 = 6e8;
-  p.a2 = 5e4;
-  p.a3 = 5;
-  p.k_nc = 1e-4;
-  p.c = 1e-7;
-  p.restitution = 0.3;
-  return p;
-}
+DemContactParameters pine() { return testing::pine_table2_particle_particle(); }
 
 // LIGGGHTS-INL `hysteretic/nonlinear2` with limitForce on, one contact, from models.md 3.3.
 class PeerModel2 {
