@@ -1,5 +1,6 @@
 #include "designer/simulate/scene_simulation.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -70,10 +71,14 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
         restart.reset();
       }
     });
+  const auto build_start = std::chrono::steady_clock::now();
   Stepper* stepper = adapter.build(log, progress);
   if (!stepper) return interrupted_while_filling(adapter, request, identity);
+  const double build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
 
   SceneRunOptions run;
+  run.setup_seconds = build_seconds;
   run.columns = adapter.columns();
   run.out = request.out;
   run.log = request.log;

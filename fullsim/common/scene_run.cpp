@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "models/os/interrupt_request.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -219,7 +220,10 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   r.performance.add_phase_time("sampling", sample_seconds);
   r.performance.add_phase_time("snapshots", snapshot_seconds);
   r.performance.add_phase_time("checkpoint", checkpoint_seconds);
-  r.performance.set_wall_seconds(r.wall_seconds);
+  r.performance.set_wall_seconds(r.wall_seconds + o.setup_seconds);
+  if (o.setup_seconds > 0.0)
+    r.performance.add_figure(o.setup_name + " (before the run)",
+                             format_quantity(o.setup_seconds, "s") + " of the wall time");
   log << r.performance.render();
   return r;
 }

@@ -54,6 +54,10 @@ struct SceneRunOptions {
   // Writes the scene's own data into the checkpoint's /scene group (which exists).
   std::function<void(Hdf5File&)> save_scene;
   TimeSeries previous;                  // the rows of the run this one continues
+  // [s] Wall time spent before this loop on the same stepper (a DEM scene's fill, whose steps
+  // are in the engine's phases): the block's wall time covers it, and it is shown on its own.
+  double setup_seconds = 0.0;
+  std::string setup_name = "fill";
   long steps_between_checks = 200;      // steps between interrupt checks and progress updates
   std::ostream* log = nullptr;          // plan line, end, performance block; null: silent
   ProgressSink* progress = nullptr;     // null: none

@@ -50,7 +50,8 @@ DemEngine::DemEngine(DemSettings settings, DemCheckpoint checkpoint)
       sink_(std::move(checkpoint.sink)),
       time_(checkpoint.time),
       step_(checkpoint.step),
-      particle_steps_(checkpoint.particle_steps) {
+      particle_steps_(checkpoint.particle_steps),
+      particle_steps_before_(checkpoint.particle_steps) {
   pending_ = std::make_unique<DemCheckpoint>(std::move(checkpoint));
 }
 
@@ -237,6 +238,9 @@ void DemEngine::prepare(std::ostream& out) {
     // as it is, not re-taken from the bed at the restart (a tilted bed is taller than the one
     // the uninterrupted run took it from, and the continued run would differ from it).
     restore_prepared_state();
+    // Within the skin of where they stand now: they stand within half of it from the restored
+    // list's positions, and move at most half of it more before its next rebuild.
+    wall_reach_.update(particles_, walls_, meshes_, neighbours_.skin());
     if (v_wall > 0.0 && guard_.wall_speed() == 0.0)
       guard_.allow_moving_walls(0.5 * mass * (v_design * v_design + v_fed * v_fed), v_wall);
   } else {
@@ -301,6 +305,7 @@ void DemEngine::rebuild_neighbours() {
     particles_.permute(morton_order(particles_.position, box_, cell));
   }
   neighbours_.rebuild(particles_, box_);
+  wall_reach_.update(particles_, walls_, meshes_, neighbours_.skin());
 }
 
 void DemEngine::reset_forces() {
@@ -314,6 +319,7 @@ void DemEngine::compute_forces() {
   const std::size_t n = particles_.size();
   ForceContext c{particles_, neighbours_, box_,   walls_, meshes_,
                  time_,      time_step_.value, n >= settings_.parallel_from};
+  if (wall_reach_.size() == n) c.wall_reach = wall_reach_.data();
   DeepestOverlap pairs, walls;
   // One parallel region for the pair and wall loops; the walls phase is the time one thread
   // spent on its share of the wall contacts, the pairs phase the rest.
@@ -523,7 +529,10 @@ std::string DemEngine::performance_report() const { return performance().render(
 RunReport DemEngine::performance() const {
   RunReport r = report_;
   r.set_wall_seconds(run_seconds_);
-  const double rate = run_seconds_ > 0.0 ? particle_steps_ / run_seconds_ : 0.0;
+  // Over the steps this engine ran, in the time it spent on them (a continued run's earlier
+  // steps were timed by the engine that ran them).
+  const double rate =
+      run_seconds_ > 0.0 ? (particle_steps_ - particle_steps_before_) / run_seconds_ : 0.0;
   r.add_figure("throughput", format("%.3g particle-steps/s", rate));
   r.add_figure("steps", format("%ld (dt %.4g s, t = %.4g s)", step_, time_step_.value, time_));
   r.add_figure("particles", format("%zu", particles_.size()));

@@ -32,6 +32,7 @@
 #include "fullsim/dem/simulation_box.hpp"
 #include "fullsim/dem/time_step_choice.hpp"
 #include "fullsim/dem/wall.hpp"
+#include "fullsim/dem/wall_reach.hpp"
 #include "models/contact/contact_law_registry.hpp"
 #include "models/contact/contact_time_step.hpp"
 #include "models/material/dem_parameters.hpp"
@@ -121,6 +122,7 @@ class DemEngine final : public Stepper {
   ParticleStore& particles() { return particles_; }
   const ParticleStore& particles() const { return particles_; }
   const NeighbourList& neighbours() const { return neighbours_; }
+  const WallReach& wall_reach() const { return wall_reach_; }
   const std::vector<Wall>& walls() const { return walls_; }
   const std::vector<MeshWall>& mesh_walls() const { return meshes_; }
   // The scene's walls as segments for pictures (written with the first particle snapshot); not
@@ -168,6 +170,7 @@ class DemEngine final : public Stepper {
   std::vector<std::string> skipped_;
   std::unique_ptr<ForceKernel> kernel_;
   NeighbourList neighbours_;
+  WallReach wall_reach_;  // the walls each particle can touch until the next rebuild
   TimeStepChoice time_step_;
   BlowUpGuard guard_;
   RunReport report_{"DEM run"};
@@ -179,6 +182,7 @@ class DemEngine final : public Stepper {
   double time_ = 0.0;
   long step_ = 0;
   double particle_steps_ = 0.0;
+  double particle_steps_before_ = 0.0;  // a continued run's earlier ones (not in run_seconds_)
   double run_seconds_ = 0.0;
   double checked_ratio_ = 0.0;  // overlap / radius whose springs were checked last
   std::string spring_warning_;

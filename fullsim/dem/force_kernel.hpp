@@ -28,6 +28,8 @@ struct ForceContext {
   double dt = 0.0;    // [s]
   bool parallel = true;  // run the loops on the OpenMP threads (off for small systems)
   int max_lane_bits = 512;  // widest vector lanes of the pair loop to use, where available
+  // Per particle slot, the walls it can touch (wall_reach.hpp); null: every wall is tested.
+  const std::uint64_t* wall_reach = nullptr;
 };
 
 // The widest vector lanes of the pair loop this processor runs: 512 (AVX-512 F, VL, DQ), 256

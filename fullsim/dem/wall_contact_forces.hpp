@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 #include "fullsim/dem/force_kernel.hpp"
@@ -57,7 +58,9 @@ class WallContactForces {
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
+      const std::uint64_t reach = c.wall_reach ? c.wall_reach[i] : ~std::uint64_t{0};
       for (std::size_t k = 0; k < walls; ++k) {
+        if (!in_reach(reach, k)) continue;  // no contact, history already zero
         const Wall& wall = c.walls[k];
         double* h = history + i * stride + k * kHistory;
         const WallTouch touch = wall.touch(xi);
@@ -74,6 +77,7 @@ class WallContactForces {
         if (ratio > worst.ratio) worst = {ratio, i, true};
       }
       for (std::size_t m = 0; m < meshes; ++m) {
+        if (!in_reach(reach, walls + m)) continue;  // no contact, slots already free
         const MeshWall& mesh = c.meshes[m];
         double* slots = history + i * stride + walls * kHistory + m * kSlots * kSlot;
         std::array<MeshTouch, kSlots> touch;
@@ -121,6 +125,11 @@ class WallContactForces {
   }
 
  private:
+  // Whether wall (or mesh) `k` may touch a particle with this reach mask (WallReach: beyond 64
+  // walls every wall is in reach).
+  static bool in_reach(std::uint64_t reach, std::size_t k) {
+    return k >= 64 || ((reach >> k) & 1u) != 0;
+  }
   // The P-W set with no sliding and no rolling friction (normal law and damping kept).
   static DemContactParameters without_friction(DemContactParameters set) {
     set.friction = 0.0;

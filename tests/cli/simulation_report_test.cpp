@@ -117,6 +117,19 @@ TEST_F(SimulationReport, DemHopperReportShowsSpeedAndLayers) {
   EXPECT_EQ(count(text, "DEM particles coloured by speed"), 3) << text;
   EXPECT_EQ(count(text, "DEM particles coloured by the layer they started in"), 3) << text;
   EXPECT_EQ(text.find(" 0 particles"), std::string::npos) << text;
+  // The performance block covers the fill (its steps are in the phases): the phases add up to
+  // no more than the wall time, which holds the fill's time, shown on its own line.
+  const auto json = nlohmann::json::parse(slurp(dir_ / "run/results.json"));
+  const auto& performance = json.at("performance").at(0);
+  const double wall = performance.at("wall_s").get<double>();
+  double phases = 0.0;
+  for (const auto& [name, seconds] : performance.at("phases_s").items())
+    phases += seconds.get<double>();
+  EXPECT_GT(phases, 0.5 * wall);
+  EXPECT_LE(phases, wall * (1 + 1e-9));
+  const std::string fill = performance.at("figures").at("fill (before the run)").get<std::string>();
+  EXPECT_NE(fill.find(" s of the wall time"), std::string::npos) << fill;
+  EXPECT_LT(std::stod(fill), wall);
 }
 
 // A results file whose run folder has lost its snapshots still gives a report (no pictures of the
