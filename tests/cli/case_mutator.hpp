@@ -34,7 +34,8 @@ class CaseMutator {
     for (const auto& c : cases_) collect_keys(c.text, "", keys_);
     collect_keys(material_.text, "material.", keys_);
     for (const char* k : {"dem.slab_depth", "dem.random_seed", "dem.time_step", "dem.end_time",
-                          "dem.normal_law", "cel.cell_size", "cel.end_time", "design.required_throughput",
+                          "dem.normal_law", "dem.slab_faces", "dem.cohesion", "dem.force_time_step",
+                          "cel.cell_size", "cel.end_time", "design.required_throughput",
                           "design.mass_flow_margin", "design.max_stopping_thickness", "hopper.wall_friction_angle",
                           "material.flow_properties.flow_function", "material.flow_properties.ff_exponent",
                           "material.flow_properties.ff_coefficient", "material.bulk.moisture_content"})
