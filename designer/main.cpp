@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   add_simulate_command(app, exit_code);
   add_bench_command(app, exit_code);
   add_calibrate_command(app, exit_code);
-  add_reserved_commands(app, exit_code);
+  add_sweep_command(app, exit_code);
 
   try {
     app.parse(argc, argv);

@@ -119,6 +119,11 @@ Material resolve_material(const toml::table& root, const toml::table* case_table
   return m;
 }
 
+// The case in `root` (parsed from `path`; a copy of a parsed table has no line numbers, so its
+// errors name the key without them) with the overrides applied, checked.
+Case load_case_table(toml::table root, const std::string& path,
+                     std::span<const SetOverride> overrides, const MaterialLibrary& materials);
+
 }  // namespace
 
 SetOverride parse_set_override(const std::string& text) {
@@ -136,7 +141,20 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides) 
 
 Case load_case(const std::string& path, std::span<const SetOverride> overrides,
                const MaterialLibrary& materials) {
-  toml::table root = parse_case_file(path);
+  return load_case_table(parse_case_file(path), path, overrides, materials);
+}
+
+ParsedCase parse_case(const std::string& path) { return {path, parse_case_file(path)}; }
+
+Case load_case(const ParsedCase& parsed, std::span<const SetOverride> overrides,
+               const MaterialLibrary& materials) {
+  return load_case_table(parsed.root, parsed.path, overrides, materials);
+}
+
+namespace {
+
+Case load_case_table(toml::table root, const std::string& path,
+                     std::span<const SetOverride> overrides, const MaterialLibrary& materials) {
   for (const auto& o : overrides) apply_override(root, o);
 
   const TableContext root_ctx{"", path};
@@ -213,6 +231,8 @@ Case load_case(const std::string& path, std::span<const SetOverride> overrides,
     read_fields(*cel, cel_case_fields(), c.cel, TableContext{"cel", path});
   return c;
 }
+
+}  // namespace
 
 CaseSummary summarize_case(const std::string& path) {
   CaseSummary s;

@@ -88,6 +88,17 @@ bool MaterialLibrary::contains(const std::string& name) const {
 }
 
 Material MaterialLibrary::load(const std::string& name) const {
+  {
+    const std::lock_guard<std::mutex> lock(loaded_->mutex);
+    if (const auto it = loaded_->by_name.find(name); it != loaded_->by_name.end())
+      return it->second;
+  }
+  Material m = read(name);
+  const std::lock_guard<std::mutex> lock(loaded_->mutex);
+  return loaded_->by_name.emplace(name, std::move(m)).first->second;
+}
+
+Material MaterialLibrary::read(const std::string& name) const {
   for (const auto& folder : folders_) {
     const fs::path file = folder / (name + ".toml");
     std::error_code ec;

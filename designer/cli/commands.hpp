@@ -19,7 +19,7 @@ void add_simulate_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 // calibrate: the reduced models' discharge coefficients fitted to a full rung.
 void add_calibrate_command(CLI::App& app, int& exit_code);
-// sweep: a reserved name that says "not yet available".
-void add_reserved_commands(CLI::App& app, int& exit_code);
+// sweep: the design check over a grid of case values (what-if analysis).
+void add_sweep_command(CLI::App& app, int& exit_code);
 
 }  // namespace feedflow

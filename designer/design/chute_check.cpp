@@ -96,7 +96,8 @@ std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s) {
   return laws;
 }
 
-void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignRecord& record) {
+void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignDetail detail,
+                 DesignRecord& record) {
   const Material& m = c.material;
   if (!m.surface_flow)
     throw InputError(m.origin, "material.surface_flow",
@@ -116,6 +117,7 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
   for (auto& f : judge_chute(chute, c.design, record.results).findings) verdict.add(std::move(f));
   for (auto& note : notes) verdict.add(std::move(note));
   record.verdict = verdict.verdict();
+  if (detail == DesignDetail::results) return;
   record.charts = chute_charts(chute, m, stop, deposit);
   record.assumptions = chute_assumptions(m, stop);
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "designer/case/case.hpp"
+#include "designer/design/design_detail.hpp"
 #include "designer/design/model_choices.hpp"
 #include "models/chute/deposit_models.hpp"
 #include "models/chute/stopping_thickness_models.hpp"
@@ -14,7 +15,8 @@
 
 namespace feedflow {
 
-void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignRecord& record);
+void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignDetail detail,
+                 DesignRecord& record);
 
 // The corners of the uncertainty of theta1, theta2 and L of a material's surface-flow law.
 PouliquenLaw pouliquen_law_of(const SurfaceFlowProperties& s);

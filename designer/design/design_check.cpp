@@ -6,10 +6,14 @@
 
 namespace feedflow {
 
-DesignRecord design_check(const Case& c, const ModelChoices& models) {
+DesignRecord design_check(const Case& c, const ModelChoices& models, DesignDetail detail) {
   DesignRecord record;
+  if (detail == DesignDetail::results) {
+    equipment_of(c.kind()).check(c, models, detail, record);
+    return record;
+  }
   describe_case(c, record);
-  equipment_of(c.kind()).check(c, models, record);
+  equipment_of(c.kind()).check(c, models, detail, record);
   if (c.material.bulk.moisture_content)
     record.assumptions.push_back("Moisture content " + format_quantity(*c.material.bulk.moisture_content, "%", 3) +
                                  " is informational: no model of this check reads it (its effect on the flow is "

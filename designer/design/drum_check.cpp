@@ -93,7 +93,7 @@ AngleOfRepose rolling_angle_band(const Drum& drum, const Material& m) {
   return {nominal, low, high};
 }
 
-void check_drum(const Case& c, const Drum& drum, DesignRecord& record) {
+void check_drum(const Case& c, const Drum& drum, DesignDetail detail, DesignRecord& record) {
   const Material& m = c.material;
   if (!m.drum_flow)
     throw InputError(m.origin, "material.drum_flow",
@@ -112,6 +112,7 @@ void check_drum(const Case& c, const Drum& drum, DesignRecord& record) {
                         "the dynamic angle of repose model holds in the rolling regime only; this drum is " +
                             std::string(to_string(regime.regime))});
   record.verdict = verdict.verdict();
+  if (detail == DesignDetail::results) return;
   record.charts = drum_charts(drum, m, regime);
   record.assumptions = drum_assumptions(thresholds);
 }

@@ -6,12 +6,13 @@
 #include <vector>
 
 #include "designer/case/case.hpp"
+#include "designer/design/design_detail.hpp"
 #include "models/core/chart.hpp"
 #include "models/drum/drum_regime.hpp"
 
 namespace feedflow {
 
-void check_drum(const Case& c, const Drum& drum, DesignRecord& record);
+void check_drum(const Case& c, const Drum& drum, DesignDetail detail, DesignRecord& record);
 
 // The regime thresholds of a material's [drum_flow].
 DrumRegimeThresholds regime_thresholds(const DrumFlowProperties& d);

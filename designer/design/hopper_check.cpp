@@ -12,7 +12,8 @@ HopperModels hopper_models(const ModelChoices& choices) {
   return {&choices.of(flow_factor_models()), &choices.of(critical_outlet_models()), &choices.of(discharge_models())};
 }
 
-void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, DesignRecord& record) {
+void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, DesignDetail detail,
+                  DesignRecord& record) {
   const HopperAssessment a =
       assess_hopper(h, HopperMaterial::of(c.material, models.of(hopper_density_models())), hopper_models(models));
   HopperEstimates estimates = hopper_estimates(c.material, h, a);
@@ -22,6 +23,7 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
   for (auto& f : judge_hopper(h, c.design, record.results).findings) verdict.add(std::move(f));
   for (auto& note : estimates.notes) verdict.add(std::move(note));
   record.verdict = verdict.verdict();
+  if (detail == DesignDetail::results) return;
   record.charts = hopper_charts(c.material, h, a);
   record.assumptions = hopper_assumptions(c, h, a);
 }

@@ -4,6 +4,7 @@
 // interlocking, throughput against the case's [design] targets) and explain (what the models
 // assume and which way each errs; the charts).
 #include "designer/case/case.hpp"
+#include "designer/design/design_detail.hpp"
 #include "designer/design/hopper_estimates.hpp"
 #include "designer/design/model_choices.hpp"
 #include "models/core/design_record.hpp"
@@ -14,7 +15,8 @@ namespace feedflow {
 HopperModels hopper_models(const ModelChoices& choices);
 
 // Fills the record's results, verdict, charts and assumptions.
-void check_hopper(const Case& c, const Hopper& hopper, const ModelChoices& models, DesignRecord& record);
+void check_hopper(const Case& c, const Hopper& hopper, const ModelChoices& models,
+                  DesignDetail detail, DesignRecord& record);
 
 // What the hopper models assume, and which way each number errs.
 std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a);

@@ -19,26 +19,36 @@ namespace {
 
 const std::array kEquipment{
     EquipmentEntry{EquipmentKind::hopper,
-                   [](const Case& c, const ModelChoices& m, DesignRecord& r) {
-                     check_hopper(c, std::get<Hopper>(c.equipment), m, r);
+                   [](const Case& c, const ModelChoices& m, DesignDetail d, DesignRecord& r) {
+                     check_hopper(c, std::get<Hopper>(c.equipment), m, d, r);
                    },
-                   [](const Case& c, const Estimates& e) { return judge_hopper(std::get<Hopper>(c.equipment), c.design, e); }, dem_hopper_adapter, cel_hopper_adapter, Solver::cel,
+                   [](const Case& c, const Estimates& e) {
+                     return judge_hopper(std::get<Hopper>(c.equipment), c.design, e);
+                   },
+                   dem_hopper_adapter, cel_hopper_adapter, Solver::cel,
                    "CEL-FEM chosen: the seed's rule puts pilot and industrial hoppers on the "
                    "continuum (same cost as a one-layer DEM slab, no slab scaling of the mass)"},
     EquipmentEntry{EquipmentKind::chute,
-                   [](const Case& c, const ModelChoices& m, DesignRecord& r) {
-                     check_chute(c, std::get<Chute>(c.equipment), m, r);
+                   [](const Case& c, const ModelChoices& m, DesignDetail d, DesignRecord& r) {
+                     check_chute(c, std::get<Chute>(c.equipment), m, d, r);
                    },
-                   [](const Case& c, const Estimates& e) { return judge_chute(std::get<Chute>(c.equipment), c.design, e); }, dem_chute_adapter, cel_chute_adapter, Solver::cel,
+                   [](const Case& c, const Estimates& e) {
+                     return judge_chute(std::get<Chute>(c.equipment), c.design, e);
+                   },
+                   dem_chute_adapter, cel_chute_adapter, Solver::cel,
                    "CEL-FEM chosen: the seed found the continuum about 40x cheaper than DEM on the "
                    "full-scale inclined plane"},
-    EquipmentEntry{EquipmentKind::drum,
-                   [](const Case& c, const ModelChoices&, DesignRecord& r) {
-                     check_drum(c, std::get<Drum>(c.equipment), r);
-                   },
-                   [](const Case& c, const Estimates& e) { return judge_drum(std::get<Drum>(c.equipment), c.design, e); }, dem_drum_adapter, cel_drum_adapter, Solver::dem,
-                   "DEM chosen: a laboratory drum is a small system, where the seed found particles "
-                   "as cheap as the continuum (about 2x) and closer to the experiment"},
+    EquipmentEntry{
+        EquipmentKind::drum,
+        [](const Case& c, const ModelChoices&, DesignDetail d, DesignRecord& r) {
+          check_drum(c, std::get<Drum>(c.equipment), d, r);
+        },
+        [](const Case& c, const Estimates& e) {
+          return judge_drum(std::get<Drum>(c.equipment), c.design, e);
+        },
+        dem_drum_adapter, cel_drum_adapter, Solver::dem,
+        "DEM chosen: a laboratory drum is a small system, where the seed found particles "
+        "as cheap as the continuum (about 2x) and closer to the experiment"},
 };
 
 }  // namespace

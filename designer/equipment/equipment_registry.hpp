@@ -7,6 +7,7 @@
 #include <span>
 
 #include "designer/case/case.hpp"
+#include "designer/design/design_detail.hpp"
 #include "designer/design/model_choices.hpp"
 #include "designer/simulate/scene_adapter.hpp"
 
@@ -15,7 +16,7 @@ namespace feedflow {
 struct EquipmentEntry {
   EquipmentKind kind;
   // The design check (rungs L0 and L1): evaluate the reduced models, judge, explain.
-  void (*check)(const Case&, const ModelChoices&, DesignRecord&);
+  void (*check)(const Case&, const ModelChoices&, DesignDetail, DesignRecord&);
   // The judge of every rung: the case's targets and any rung's estimates to a verdict.
   Verdict (*judge)(const Case&, const Estimates&);
   // The scene that verifies the case on each full rung.

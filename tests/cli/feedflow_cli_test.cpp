@@ -86,17 +86,6 @@ TEST_F(FeedflowCli, BadCaseExitsTwoAndWritesNothing) {
   EXPECT_EQ(run_feedflow("", dir_).exit_code, 2);                  // no subcommand
 }
 
-// Reserved commands say "not yet available" and exit 3, whatever their arguments.
-TEST_F(FeedflowCli, ReservedCommandsExitThree) {
-  for (const auto* cmd : {"sweep x", "sweep"}) {
-    SCOPED_TRACE(cmd);
-    const auto r = run_feedflow(cmd, dir_);
-    EXPECT_EQ(r.exit_code, 3);
-    EXPECT_NE(r.err.find("not yet available"), std::string::npos) << r.err;
-    EXPECT_TRUE(r.out.empty());
-  }
-}
-
 // simulate refuses a bad solver name, a time without a time unit and a missing checkpoint
 // with exit code 2, naming the option, before anything runs or is written.
 TEST_F(FeedflowCli, SimulateBadOptionsExitTwo) {

@@ -18,7 +18,8 @@ namespace feedflow {
 namespace {
 
 // A run that answered `quantity` with a number and band, in `seconds`.
-BenchRun number_run(const std::string& quantity, double value, double low, double high, double seconds) {
+BenchRun number_run(const std::string& quantity, double value, double low, double high,
+                    double seconds) {
   BenchRun r;
   r.invocation = "synthetic";
   r.wall_seconds = seconds;
@@ -34,7 +35,8 @@ BenchRun label_run(const std::string& quantity, const std::string& label, double
   return r;
 }
 
-BenchPoint point(const std::string& setting, const std::string& rung, ReferenceRole role = ReferenceRole::none,
+BenchPoint point(const std::string& setting, const std::string& rung,
+                 ReferenceRole role = ReferenceRole::none,
                  std::optional<double> cell = std::nullopt) {
   BenchPoint p;
   p.setting = setting;
@@ -61,14 +63,17 @@ TEST(BenchPlan, EveryPointIsAValidCaseWithReferenceRuns) {
       std::vector<SetOverride> overrides;
       for (const auto& s : q.sets) overrides.push_back(parse_set_override(s));
       for (const auto& s : p.sets) overrides.push_back(parse_set_override(s));
-      EXPECT_NO_THROW(load_case(std::string(FEEDFLOW_SOURCE_DIR) + "/" + q.case_file, overrides))
+      EXPECT_NO_THROW(
+          load_case((std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).string(), overrides))
           << bench_invocation(q, p);
       levels += p.role == ReferenceRole::cel_refinement;
       dem += p.role == ReferenceRole::dem_reference;
       quick += p.quick;
     }
-    if (q.id == "chute_stopping_thickness_37") EXPECT_EQ(levels, 0);
-    else EXPECT_GE(levels, q.categorical ? 1 : 3) << q.id;
+    if (q.id == "chute_stopping_thickness_37")
+      EXPECT_EQ(levels, 0);
+    else
+      EXPECT_GE(levels, q.categorical ? 1 : 3) << q.id;
     EXPECT_EQ(dem, 1) << q.id;
     EXPECT_GE(quick, 2) << q.id;  // a reduced-model point and a coarse CEL point at least
   }
@@ -80,15 +85,17 @@ TEST(BenchPlan, EveryPointIsAValidCaseWithReferenceRuns) {
 // far outside both error bars is reported as a disagreement.
 TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
   BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}, {}, {}};
-  q.points = {point("beverloo", "L0"), point("johanson", "L0"),
+  q.points = {point("beverloo", "L0"),
+              point("johanson", "L0"),
               point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
               point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
               point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005),
               point("DEM seed law", "L3", ReferenceRole::dem_reference)};
   std::map<std::string, BenchRun> runs;
-  auto cel = [](double h) { return 5.0 + 40.0 * h; };  // limit 5 kg/s
-  runs[point_id(q.points[0])] = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.003);   // band holds 5
-  runs[point_id(q.points[1])] = number_run("mass_flow_rate", 6.0, 5.5, 6.5, 0.004);   // slower, worse
+  auto cel = [](double h) { return 5.0 + 40.0 * h; };                                // limit 5 kg/s
+  runs[point_id(q.points[0])] = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.003);  // band holds 5
+  runs[point_id(q.points[1])] =
+      number_run("mass_flow_rate", 6.0, 5.5, 6.5, 0.004);  // slower, worse
   runs[point_id(q.points[2])] = number_run("mass_flow_rate", cel(0.02), 5.7, 5.9, 2.0);
   runs[point_id(q.points[3])] = number_run("mass_flow_rate", cel(0.01), 5.3, 5.5, 11.0);
   runs[point_id(q.points[4])] = number_run("mass_flow_rate", cel(0.005), 5.1, 5.3, 170.0);
@@ -123,7 +130,9 @@ TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
               point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005)};
   std::map<std::string, BenchRun> runs;
   const double angles[] = {39.1, 36.7, 38.3, 45.7};
-  for (int k = 0; k < 4; ++k) runs[point_id(q.points[k])] = number_run("mass_flow_rate", angles[k], angles[k], angles[k], k + 1.0);
+  for (int k = 0; k < 4; ++k)
+    runs[point_id(q.points[k])] =
+        number_run("mass_flow_rate", angles[k], angles[k], angles[k], k + 1.0);
   const BenchQuestionTable t = tabulate(q, runs);
   EXPECT_NE(t.reference.source.find("no observed order"), std::string::npos);
   EXPECT_DOUBLE_EQ(*t.reference.value, 45.7);
@@ -137,9 +146,11 @@ TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
 // failed and one without the quantity have no error and are not on the front.
 TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
   BenchQuestion q{"arch", "arch", "cases/pilot_hopper.toml", {}, true, {}, {}, {}};
-  q.points = {point("jenike", "L0"), point("static arch", "L0"),
+  q.points = {point("jenike", "L0"),
+              point("static arch", "L0"),
               point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
-              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01), point("not run", "L3"),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
+              point("not run", "L3"),
               point("failed", "L3")};
   for (auto& p : q.points) p.quantity = "arching";
   std::map<std::string, BenchRun> runs;
@@ -168,7 +179,8 @@ TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
 // A saved run reads back for the same invocation and inputs only; a damaged file is not read; a
 // run saved before inputs were fingerprinted counts only where asked (a simulation).
 TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
-  const auto dir = std::filesystem::temp_directory_path() / ("feedflow_bench_run_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("feedflow_bench_run_" + std::to_string(::getpid()));
   BenchRun r = number_run("mass_flow_rate", 4.5, 4.0, 5.5, 0.25);
   r.invocation = "design cases/pilot_hopper.toml";
   r.cores = 2;
@@ -180,7 +192,8 @@ TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
   EXPECT_EQ(back->cores, 2);
   EXPECT_EQ(back->results, r.results);
   EXPECT_FALSE(saved_bench_run(dir, "design cases/other.toml", r.inputs, false));
-  EXPECT_FALSE(saved_bench_run(dir, r.invocation, "fedcba9876543210", true));  // the material changed
+  EXPECT_FALSE(
+      saved_bench_run(dir, r.invocation, "fedcba9876543210", true));  // the material changed
   r.inputs.clear();
   save_bench_run(dir, r);
   EXPECT_FALSE(saved_bench_run(dir, r.invocation, "0123456789abcdef", false));
@@ -193,26 +206,34 @@ TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
 // The inputs' fingerprint follows the material: a design point's changes with the material's
 // [calibration], a simulation's does not (no solver reads it), both with the case's values.
 TEST(BenchRunFile, FingerprintFollowsWhatTheAnswerReads) {
-  const auto dir = std::filesystem::temp_directory_path() / ("feedflow_bench_fp_" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("feedflow_bench_fp_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir / "cases" / "materials");
-  std::filesystem::copy_file(std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" / "pilot_hopper.toml",
+  std::filesystem::copy_file(std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" /
+                                 "pilot_hopper.toml",
                              dir / "cases" / "pilot_hopper.toml");
-  const auto pine = std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" / "materials" / "loblolly_pine.toml";
+  const auto pine =
+      std::filesystem::path(FEEDFLOW_SOURCE_DIR) / "cases" / "materials" / "loblolly_pine.toml";
   std::filesystem::copy_file(pine, dir / "cases" / "materials" / "loblolly_pine.toml");
   BenchQuestion q{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {}, {}, {}};
   BenchPoint design, cel;
   cel.solver = Solver::cel;
   const auto cwd = std::filesystem::current_path();
   std::filesystem::current_path(dir);  // the material is found in ./cases/materials
-  const std::string d0 = bench_inputs_fingerprint(q, design, "."), c0 = bench_inputs_fingerprint(q, cel, ".");
-  const std::string plain =
-      without_calibration(material_text(load_case((dir / "cases" / "pilot_hopper.toml").string()).material));
+  const std::string d0 = bench_inputs_fingerprint(q, design, "."),
+                    c0 = bench_inputs_fingerprint(q, cel, ".");
+  const std::string plain = without_calibration(
+      material_text(load_case((dir / "cases" / "pilot_hopper.toml").string()).material));
   std::ofstream(dir / "cases" / "materials" / "loblolly_pine.toml")
-      << plain << "\n[calibration]\nagainst = \"cel\"\nrung = \"test\"\nscene = \"pilot_hopper\"\ngeometry = \"wedge\"\n"
+      << plain
+      << "\n[calibration]\nagainst = \"cel\"\nrung = \"test\"\nscene = \"pilot_hopper\"\ngeometry "
+         "= \"wedge\"\n"
          "density_model = \"compressible\"\ncommit = \"none\"\ndate = \"2026-12-02\"\n"
          "[calibration.discharge.brown]\ncoefficients = { factor = 1.5 }\n";
-  const std::string d1 = bench_inputs_fingerprint(q, design, "."), c1 = bench_inputs_fingerprint(q, cel, ".");
-  std::ofstream(dir / "cases" / "pilot_hopper.toml", std::ios::app) << "\n# a comment changes the case's text\n";
+  const std::string d1 = bench_inputs_fingerprint(q, design, "."),
+                    c1 = bench_inputs_fingerprint(q, cel, ".");
+  std::ofstream(dir / "cases" / "pilot_hopper.toml", std::ios::app)
+      << "\n# a comment changes the case's text\n";
   const std::string c2 = bench_inputs_fingerprint(q, cel, ".");
   std::filesystem::current_path(cwd);
   EXPECT_EQ(d0.size(), 16u);
