@@ -99,7 +99,9 @@ BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std:
     } else {
       record = design_check(c, ModelChoices::parse(p.models));
     }
-    run.results = to_json(record).at("results");
+    const auto saved = to_json(record);
+    run.results = saved.at("results");
+    run.verdict = saved.at("verdict");
   } catch (const std::exception& e) {  // a bench row says why a point failed; the bench goes on
     run.status = std::string("failed: ") + e.what();
   }
@@ -116,13 +118,7 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
     if (j.at("invocation").get<std::string>() != invocation) return std::nullopt;
     const std::string saved_inputs = j.value("inputs", "");
     if (saved_inputs.empty() ? !accept_unfingerprinted : saved_inputs != inputs) return std::nullopt;
-    BenchRun run;
-    run.invocation = invocation;
-    run.status = j.at("status").get<std::string>();
-    run.wall_seconds = j.at("wall_seconds").get<double>();
-    run.cores = j.at("cores").get<int>();
-    run.results = j.at("results");
-    run.commit = j.value("commit", "");
+    BenchRun run = bench_run_from_json(j);
     run.inputs = saved_inputs;
     return run;
   } catch (const std::exception&) {  // damaged: run it again
@@ -130,17 +126,35 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
   }
 }
 
-void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
-  std::filesystem::create_directories(folder);
+nlohmann::ordered_json bench_run_json(const BenchRun& run) {
   nlohmann::ordered_json j;
   j["invocation"] = run.invocation;
   j["status"] = run.status;
   j["wall_seconds"] = run.wall_seconds;
   j["cores"] = run.cores;
   j["results"] = run.results;
+  j["verdict"] = run.verdict;
   j["commit"] = run.commit;
   j["inputs"] = run.inputs;
-  write_file_atomically(folder / "run.json", j.dump(2) + "\n");
+  return j;
+}
+
+BenchRun bench_run_from_json(const nlohmann::ordered_json& j) {
+  BenchRun run;
+  run.invocation = j.at("invocation").get<std::string>();
+  run.status = j.at("status").get<std::string>();
+  run.wall_seconds = j.at("wall_seconds").get<double>();
+  run.cores = j.at("cores").get<int>();
+  run.results = j.at("results");
+  run.verdict = j.value("verdict", nlohmann::ordered_json());
+  run.commit = j.value("commit", "");
+  run.inputs = j.value("inputs", "");
+  return run;
+}
+
+void save_bench_run(const std::filesystem::path& folder, const BenchRun& run) {
+  std::filesystem::create_directories(folder);
+  write_file_atomically(folder / "run.json", bench_run_json(run).dump(2) + "\n");
 }
 
 std::optional<BenchRun> saved_run_of(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,

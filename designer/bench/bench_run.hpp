@@ -19,6 +19,7 @@ struct BenchRun {
   double wall_seconds = 0.0;       // [s] of the check or the simulation (loading included)
   int cores = 1;                   // threads it ran on
   nlohmann::ordered_json results;  // the record's results, as results.json has them
+  nlohmann::ordered_json verdict;  // the record's verdict, as results.json has it (null before it was kept)
   std::string commit;              // the program's commit that made it ("" for runs saved before it was kept)
   std::string inputs;              // bench_inputs_fingerprint when it was made ("" for runs saved before)
   bool done() const { return status == "done"; }
@@ -48,6 +49,9 @@ BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,
 // were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to redo).
 std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation,
                                         const std::string& inputs, bool accept_unfingerprinted);
+// A run as run.json holds it, and back (throws on a damaged one).
+nlohmann::ordered_json bench_run_json(const BenchRun& run);
+BenchRun bench_run_from_json(const nlohmann::ordered_json& json);
 // Writes folder/run.json whole (a temporary renamed over it).
 void save_bench_run(const std::filesystem::path& folder, const BenchRun& run);
 

@@ -91,12 +91,13 @@ std::string common_unit(const std::vector<std::string>& written, const CaseKeyKi
 }
 
 // "17.5 deg" for the loader (and its SI value): the number in the written unit, to 12 digits.
-SweepValue value_of(double number, const std::string& unit, const std::string& text) {
+SweepValue value_of(double number, const std::string& unit, const std::string& text,
+                    int significant = 12) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.12g", number);
+  std::snprintf(buf, sizeof buf, "%.*g", significant, number);
   SweepValue v;
   v.text = unit.empty() ? std::string(buf) : std::string(buf) + " " + unit;
-  v.si = number * unit_of(unit, text).si;
+  v.si = std::strtod(buf, nullptr) * unit_of(unit, text).si;  // the value the text says
   return v;
 }
 
@@ -132,6 +133,7 @@ void parse_range(const std::string& range, const std::string& text, const CaseKe
   };
   const double a = in_unit(*from), b = in_unit(*to);
   if (!(b > a)) refuse(text, "the range is empty: its end must be above its start");
+  axis.span = SweepAxis::Span{a * unit_si, b * unit_si, false};
   if (step) {
     const double s = in_unit(*step);
     if (!(s > 0.0)) refuse(text, "the step must be positive");
@@ -149,6 +151,7 @@ void parse_range(const std::string& range, const std::string& text, const CaseKe
     refuse(text,
            "the count after : must be a whole number from 2 to 100 000 (\"" + count_text + "\")");
   if (log && !(a > 0.0)) refuse(text, "a log range needs a positive start");
+  axis.span->log = log;
   for (long k = 0; k < n; ++k) {
     const double f = static_cast<double>(k) / static_cast<double>(n - 1);
     const double x = k == n - 1 ? b : log ? a * std::pow(b / a, f) : a + f * (b - a);
@@ -204,7 +207,21 @@ CaseKeyKind case_key_kind(const std::string& case_key) {
   return {};
 }
 
-SweepAxis parse_sweep_axis(const std::string& text) {
+SweepValue axis_value(const SweepAxis& axis, double si, int significant) {
+  return value_of(si / unit_of(axis.unit, axis.key).si, axis.unit, axis.key, significant);
+}
+
+SweepAxis parse_sweep_axis(const std::string& text, const std::string& flag) {
+  if (flag != "--vary") {  // the same rules, the faults named by the flag given
+    try {
+      return parse_sweep_axis(text);
+    } catch (const InputError& e) {
+      const std::string prefix = e.where() + ": " + e.key() + ": ";
+      const std::string what = e.what();
+      throw InputError(flag, e.key(),
+                       what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+    }
+  }
   const auto eq = text.find('=');
   if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
     refuse(text, "expected KEY=RANGE, e.g. --vary hopper.semi_angle=15..40deg/5deg");

@@ -28,6 +28,12 @@ struct SweepAxis {
   std::string case_key;  // the key in the case file: "hopper.semi_angle", "case.material"
   std::string unit;      // the unit values are shown in ("deg"); empty for words or pure numbers
   std::vector<SweepValue> values;
+  // A range (A..B) spans an interval a sample may take any value of (SI); a list does not.
+  struct Span {
+    double low = 0.0, high = 0.0;
+    bool log = false;
+  };
+  std::optional<Span> span;
   bool numeric() const { return !values.empty() && values.front().si.has_value(); }
 };
 
@@ -42,7 +48,11 @@ struct CaseKeyKind {
 };
 CaseKeyKind case_key_kind(const std::string& case_key);
 
-// Parses "KEY=RANGE" (the text after --vary); InputError naming --vary on any fault.
-SweepAxis parse_sweep_axis(const std::string& text);
+// Parses "KEY=RANGE" (the text after `flag`); InputError naming the flag on any fault.
+SweepAxis parse_sweep_axis(const std::string& text, const std::string& flag = "--vary");
+
+// A value of a numeric axis from its SI value, written in the axis unit with `significant`
+// digits ("37.25 mm").
+SweepValue axis_value(const SweepAxis& axis, double si, int significant = 12);
 
 }  // namespace feedflow

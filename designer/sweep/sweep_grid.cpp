@@ -1,10 +1,8 @@
 #include "designer/sweep/sweep_grid.hpp"
 
 #include <atomic>
-#include <chrono>
 
-#include "designer/design/design_check.hpp"
-#include "models/core/errors.hpp"
+#include "designer/sweep/sweep_solve.hpp"
 
 namespace feedflow {
 
@@ -23,48 +21,30 @@ std::vector<std::size_t> grid_index(const std::vector<SweepAxis>& axes, std::siz
   return index;
 }
 
-std::vector<SetOverride> point_overrides(const SweepRequest& request,
-                                         const std::vector<std::size_t>& index) {
-  std::vector<SetOverride> sets = request.fixed;
-  for (std::size_t k = 0; k < request.axes.size(); ++k)
-    sets.push_back({request.axes[k].case_key, request.axes[k].values[index[k]].text});
-  return sets;
+std::size_t point_count(const SweepRequest& request) {
+  if (request.sampled) return request.axes.empty() ? 1 : request.axes.front().values.size();
+  return grid_size(request.axes);
 }
 
-SweepPoint answer_point(const SweepRequest& request, const std::vector<std::size_t>& index) {
-  const auto start = std::chrono::steady_clock::now();
-  SweepPoint p;
-  p.index = index;
-  try {
-    const std::vector<SetOverride> sets = point_overrides(request, index);
-    const Case c = load_case(request.parsed, sets, request.materials);
-    DesignRecord r = design_check(c, request.models, DesignDetail::results);
-    p.verdict = r.verdict.status;
-    for (const auto& f : r.verdict.findings)
-      if (f.status == p.verdict && !f.quantity.empty()) p.governing.push_back(f.quantity);
-    p.results = std::move(r.results);
-    for (auto& [key, e] : p.results) e.model.clear();
-    p.done = true;
-  } catch (const InputError& e) {
-    p.error = e.what();
-  } catch (const std::exception& e) {  // a model that cannot answer at this point
-    p.error = e.what();
-  }
-  p.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return p;
+std::vector<std::size_t> point_index(const SweepRequest& request, std::size_t n) {
+  if (request.sampled) return std::vector<std::size_t>(request.axes.size(), n);
+  return grid_index(request.axes, n);
 }
 
 std::vector<SweepPoint> run_grid(const SweepRequest& request, ProgressSink& progress) {
-  const std::size_t n = grid_size(request.axes);
+  const std::size_t n = point_count(request);
   std::vector<SweepPoint> points(n);
-  progress.begin("sweep", static_cast<double>(n), "points");
+  progress.begin(request.solve ? "solve" : "sweep", static_cast<double>(n), "points");
   std::atomic<std::size_t> finished{0};
   std::size_t shown = 0;  // the progress line only moves forward
-#pragma omp parallel for schedule(dynamic, 16)
+  // A solve is tens of design checks: report every point then.
+  const std::size_t every = request.solve ? 1 : 256;
+#pragma omp parallel for schedule(dynamic, request.solve ? 1 : 16)
   for (std::size_t i = 0; i < n; ++i) {
-    points[i] = answer_point(request, grid_index(request.axes, i));
+    const auto index = point_index(request, i);
+    points[i] = request.solve ? solve_point(request, index) : answer_point(request, index);
     const std::size_t done = ++finished;
-    if (done % 256 == 0) {
+    if (done % every == 0) {
 #pragma omp critical(sweep_progress)
       if (done > shown) {
         shown = done;

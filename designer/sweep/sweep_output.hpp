@@ -14,6 +14,8 @@ struct SweepTiming {
   double wall_seconds = 0.0;   // the whole command up to writing its files
   double point_seconds = 0.0;  // answering the points (points/s is taken over this)
   int threads = 1;
+  int ranks = 1;                        // simulated points: the MPI ranks sharing them
+  std::size_t made = 0, read_back = 0;  // simulated points run now, and read back
 };
 
 std::string sweep_json(const SweepRequest& request, const std::vector<SweepPoint>& points,

@@ -1,0 +1,158 @@
+#include "designer/sweep/full_rung_points.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "designer/bench/bench_run.hpp"
+#include "designer/sweep/point_queue.hpp"
+#include "designer/sweep/sweep_grid.hpp"
+#include "models/os/interrupt_request.hpp"
+#include "reports/results_json.hpp"
+
+namespace feedflow {
+namespace {
+
+// The point as the bench runs a point: the case with the fixed values is the question, the
+// point's own values and the solver are the setting.
+BenchQuestion question_of(const SweepRequest& request) {
+  BenchQuestion q;
+  q.id = "sweep";
+  q.case_file = request.parsed.path;
+  for (const auto& s : request.fixed) q.sets.push_back(s.key + "=" + s.value);
+  return q;
+}
+
+BenchPoint bench_point_of(const SweepRequest& request, const FullRungSweep& sweep,
+                          const std::vector<std::size_t>& index) {
+  BenchPoint p;
+  p.solver = sweep.solver;
+  p.rung = sweep.solver == Solver::cel ? "L2" : "L3";
+  p.time = sweep.time;
+  for (std::size_t k = 0; k < request.axes.size(); ++k)
+    p.sets.push_back(request.axes[k].case_key + "=" + request.axes[k].values[index[k]].text);
+  return p;
+}
+
+SweepPoint point_of_run(const BenchRun& run, const std::string& rung) {
+  SweepPoint p;
+  p.rung = rung;
+  p.wall_seconds = run.wall_seconds;
+  p.done = run.done();
+  if (!p.done) {
+    p.error = run.status;
+    return p;
+  }
+  p.results = estimates_from_json(run.results);
+  for (auto& [key, e] : p.results) e.model.clear();
+  if (run.verdict.is_object()) {
+    p.verdict = verdict_status_from_string(run.verdict.value("status", "unknown"));
+    for (const auto& f : run.verdict.value("findings", nlohmann::ordered_json::array()))
+      if (f.value("status", "") == to_string(p.verdict) && !f.value("quantity", "").empty()) {
+        if (p.governing.empty()) p.governing_reason = f.value("text", "");
+        p.governing.push_back(f.value("quantity", ""));
+      }
+  }
+  return p;
+}
+
+// How each known key scales the run time: cost ~ value^power.
+double cost_power(const std::string& key) {
+  if (key == "cel.cell_size") return -3.0;  // cells ~ h^-2, steps ~ h^-1
+  if (key == "dem.time_step" || key == "dem.force_time_step") return -1.0;
+  if (key == "dem.slab_depth" || key == "hopper.fill_height" || key == "chute.length" ||
+      key == "cel.end_time" || key == "dem.end_time")
+    return 1.0;
+  if (key == "drum.diameter") return 2.0;
+  if (key == "material.particle_diameter") return -3.0;
+  return 0.0;
+}
+
+}  // namespace
+
+std::filesystem::path point_folder(const std::filesystem::path& sweep_folder, std::size_t n) {
+  char name[24];
+  std::snprintf(name, sizeof name, "p%04zu", n);
+  return sweep_folder / "points" / name;
+}
+
+double expected_cost(const SweepRequest& request, const std::vector<std::size_t>& index) {
+  double cost = 1.0;
+  for (std::size_t k = 0; k < request.axes.size(); ++k) {
+    const SweepAxis& a = request.axes[k];
+    const double power = cost_power(a.case_key);
+    const auto& v = a.values[index[k]];
+    if (power != 0.0 && v.si && *v.si > 0.0) cost *= std::pow(*v.si, power);
+  }
+  return cost;
+}
+
+FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& sweep,
+                              const RankTeam& team, ProgressSink& progress) {
+  const std::size_t n = point_count(request);
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::vector<double> cost(n);
+  for (std::size_t i = 0; i < n; ++i) cost[i] = expected_cost(request, point_index(request, i));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+
+  const BenchQuestion question = question_of(request);
+  const std::string rung = sweep.solver == Solver::cel ? "L2" : "L3";
+  nlohmann::ordered_json mine = nlohmann::ordered_json::object();  // point number -> run
+  long long made = 0, read_back = 0, interrupted = 0;
+  if (team.root()) progress.begin("sweep", static_cast<double>(n), "points started");
+  {
+    PointQueue queue(team, n);
+    while (const auto position = queue.next()) {
+      const std::size_t point = order[*position];
+      if (team.root()) progress.update(static_cast<double>(queue.handed_out()));
+      const BenchPoint p = bench_point_of(request, sweep, point_index(request, point));
+      bool was_made = false;
+      const BenchRun run =
+          run_or_read_back(question, p, "", point_folder(sweep.folder, point), was_made);
+      (was_made ? made : read_back) += 1;
+      mine[std::to_string(point)] = bench_run_json(run);
+      if (run.status == "interrupted" || interrupt_requested()) {
+        interrupted = 1;
+        queue.stop();
+        break;
+      }
+    }
+  }
+  if (team.root()) progress.finish();
+
+  FullRungOutcome outcome;
+  const nlohmann::ordered_json counts = {made, read_back, interrupted};
+  const auto texts = team.gather(mine.dump() + "\n" + counts.dump());
+  if (!team.root()) return outcome;
+  outcome.points.resize(n);
+  std::vector<bool> seen(n, false);
+  for (const auto& text : texts) {
+    const auto split = text.rfind('\n');
+    const auto runs = nlohmann::ordered_json::parse(text.substr(0, split));
+    const auto c = nlohmann::ordered_json::parse(text.substr(split + 1));
+    outcome.made += c.at(0).get<std::size_t>();
+    outcome.read_back += c.at(1).get<std::size_t>();
+    outcome.interrupted = outcome.interrupted || c.at(2).get<int>() != 0;
+    for (const auto& [number, run] : runs.items()) {
+      const std::size_t i = std::stoul(number);
+      outcome.points[i] = point_of_run(bench_run_from_json(run), rung);
+      outcome.points[i].folder = point_folder("", i);  // relative to the sweep's folder
+      seen[i] = true;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    outcome.points[i].index = point_index(request, i);
+    if (!seen[i]) {
+      outcome.points[i].rung = rung;
+      outcome.points[i].error = "not run (the sweep was interrupted)";
+    }
+  }
+  return outcome;
+}
+
+}  // namespace feedflow

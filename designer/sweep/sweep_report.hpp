@@ -1,0 +1,16 @@
+#pragma once
+// A sweep as a record the design report draws (`sweep --report`): its points as the results
+// table (a solve's answers with their brackets; a grid's verdicts and governing checks, the
+// first 60), the design charts (sweep_charts) and what was varied, as notes.
+#include <string>
+#include <vector>
+
+#include "designer/sweep/sweep_output.hpp"
+#include "models/core/design_record.hpp"
+
+namespace feedflow {
+
+DesignRecord sweep_record(const SweepRequest& request, const std::vector<SweepPoint>& points,
+                          const SweepTiming& timing, const std::string& command_line);
+
+}  // namespace feedflow

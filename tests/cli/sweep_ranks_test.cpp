@@ -1,0 +1,93 @@
+// `feedflow sweep --rung L2` as a user runs it: every point a CEL simulation in its own folder;
+// two MPI ranks (mpirun, as CI runs it, as root too) give the serial run's combined results; the
+// same command again reads every point back; a point whose run was lost (killed before it was
+// saved) is the only one run again.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "run_feedflow.hpp"
+
+namespace fs = std::filesystem;
+using feedflow::testing::run_feedflow;
+using feedflow::testing::scratch_folder;
+using feedflow::testing::slurp;
+
+namespace {
+
+// Four coarse, short CEL points (20 mm cells put 3 or more cells across the half outlet).
+const std::string kSweep =
+    "sweep cases/pilot_hopper.toml --rung L2 --vary \"hopper.outlet_width=120,160 mm\" "
+    "--vary \"hopper.semi_angle=25,30 deg\" --set cel.cell_size=20mm --time 0.01s ";
+
+class SweepRanks : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = scratch_folder("feedflow_sweep_ranks", true); }
+  void TearDown() override { fs::remove_all(dir_); }
+  nlohmann::json sweep(const std::string& out) const {
+    return nlohmann::json::parse(slurp(dir_ / out / "sweep.json"));
+  }
+  fs::path dir_;
+};
+
+// Each point's results, as the combined file lists them, but for the machine's speed (a
+// throughput is measured, not computed).
+void expect_same_points(const nlohmann::json& a, const nlohmann::json& b) {
+  ASSERT_EQ(a.at("results"), b.at("results"));
+  ASSERT_EQ(a.at("points").size(), b.at("points").size());
+  for (std::size_t n = 0; n < a.at("points").size(); ++n) {
+    const auto& p = a.at("points").at(n);
+    const auto& q = b.at("points").at(n);
+    EXPECT_EQ(p.at("inputs"), q.at("inputs"));
+    EXPECT_EQ(p.at("status"), q.at("status")) << p.dump();
+    EXPECT_EQ(p.value("verdict", ""), q.value("verdict", ""));
+    for (std::size_t k = 0; k < a.at("results").size(); ++k) {
+      const std::string key = a.at("results").at(k).at("key");
+      if (key.find("per_second") == std::string::npos) {
+        EXPECT_EQ(p.at("values").at(k), q.at("values").at(k)) << n << " " << key;
+      }
+    }
+  }
+}
+
+TEST_F(SweepRanks, TwoRanksGiveTheSerialResultsAndRerunsReadPointsBack) {
+  const auto serial = run_feedflow(kSweep + "--out serial", dir_);
+  ASSERT_EQ(serial.exit_code, 0) << serial.err;
+  const auto s = sweep("serial");
+  ASSERT_EQ(s.at("points").size(), 4u);
+  for (const auto& p : s.at("points")) {
+    EXPECT_EQ(p.at("status"), "done") << p.dump();
+    EXPECT_EQ(p.at("rung"), "L2");
+    EXPECT_TRUE(fs::exists(dir_ / "serial" / p.at("folder").get<std::string>() / "run.json"));
+  }
+  EXPECT_EQ(s.at("timing").at("points_run"), 4);
+
+  // Two ranks share the points and rank 0 writes the same combined results.
+  const std::string mpirun = std::string(FEEDFLOW_MPIEXEC) +
+                             " --oversubscribe --allow-run-as-root -np 2 '" FEEDFLOW_EXECUTABLE
+                             "' ";
+  const std::string command =
+      "cd '" + dir_.string() + "' && " + mpirun + kSweep + "--out ranks > ranks.out 2> ranks.err";
+  ASSERT_EQ(std::system(command.c_str()), 0) << slurp(dir_ / "ranks.err");
+  const auto r = sweep("ranks");
+  EXPECT_EQ(r.at("timing").at("ranks"), 2);
+  EXPECT_EQ(r.at("timing").at("points_run"), 4);
+  expect_same_points(s, r);
+
+  // Again: every point is read back, none run.
+  const auto again = run_feedflow(kSweep + "--out serial", dir_);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(sweep("serial").at("timing").at("points_read_back"), 4);
+  EXPECT_EQ(sweep("serial").at("timing").at("points_run"), 0);
+  expect_same_points(s, sweep("serial"));
+
+  // A point killed before it saved its run: only that one is run again.
+  fs::remove(dir_ / "serial/points/p0002/run.json");
+  const auto resumed = run_feedflow(kSweep + "--out serial", dir_);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(sweep("serial").at("timing").at("points_run"), 1);
+  EXPECT_EQ(sweep("serial").at("timing").at("points_read_back"), 3);
+  expect_same_points(s, sweep("serial"));
+}
+
+}  // namespace
