@@ -14,7 +14,11 @@ constexpr const char* kReducedModelSuffix = "_reduced_model";
 std::string reduced_model_key(const std::string& name) { return name + kReducedModelSuffix; }
 
 std::string quantity_label(const std::string& name) {
-  std::string s = name.substr(name.rfind('.') == std::string::npos ? 0 : name.rfind('.') + 1);
+  // A dotted key ("material.bulk.density") reads as its last part; text with spaces (a sweep
+  // point's "semi_angle = 12.5 deg") keeps its dots.
+  const bool key = name.find(' ') == std::string::npos;
+  std::string s =
+      key && name.rfind('.') != std::string::npos ? name.substr(name.rfind('.') + 1) : name;
   const std::string suffix = kReducedModelSuffix;
   const bool reduced = s.size() > suffix.size() && s.ends_with(suffix);
   if (reduced) s.resize(s.size() - suffix.size());

@@ -114,7 +114,7 @@ HopperEstimates hopper_estimates(const Material& material, const Hopper& h, cons
   HopperEstimates out;
   pattern_results(h, a, out.results);
   arching_results(a, out.results);
-  out.notes.push_back({std::nullopt, "arching", "arching: " + a.nominal().jenike.statement});
+  out.notes.push_back({std::nullopt, "arching", "arching: " + a.nominal().jenike.statement()});
   discharge_results(material, h, a, out);
   return out;
 }

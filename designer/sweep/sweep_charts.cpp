@@ -153,7 +153,7 @@ Chart verdict_map(const SweepRequest& r, std::size_t kx, std::size_t ky,
           {},
           ""};
   const std::pair<VerdictStatus, int> kinds[] = {
-      {VerdictStatus::pass, 2}, {VerdictStatus::marginal, 4}, {VerdictStatus::fail, 5}};
+      {VerdictStatus::pass, 2}, {VerdictStatus::marginal, 4}, {VerdictStatus::fail, 1}};
   for (const auto& [status, colour] : kinds) {
     ChartSeries s{to_string(status), SeriesStyle::points, {}, {}, {}, colour};
     for (const auto& p : points)

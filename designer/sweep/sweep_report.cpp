@@ -6,12 +6,13 @@
 namespace feedflow {
 namespace {
 
-constexpr std::size_t kRows = 60;
+constexpr std::size_t kRows = 40;
 
 std::string inputs_of(const SweepRequest& r, const SweepPoint& p) {
   std::string s;
   for (std::size_t k = 0; k < r.axes.size(); ++k)
-    s += (k ? ", " : "") + r.axes[k].key + " = " + r.axes[k].values[p.index[k]].text;
+    s += (k ? ", " : "") + r.axes[k].key.substr(r.axes[k].key.find('.') + 1) + " = " +
+         r.axes[k].values[p.index[k]].text;
   return s.empty() ? r.parsed.path : s;
 }
 
@@ -47,7 +48,8 @@ Estimate row_of(const SweepRequest& r, const SweepPoint& p) {
     return e;
   }
   e.value = std::string(to_string(p.verdict));
-  e.model = p.governing.empty() ? std::string() : "governing: " + joined(p.governing);
+  if (p.verdict != VerdictStatus::pass && !p.governing.empty())
+    e.model = "governing: " + joined(p.governing);
   return e;
 }
 

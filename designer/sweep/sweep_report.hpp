@@ -1,7 +1,7 @@
 #pragma once
 // A sweep as a record the design report draws (`sweep --report`): its points as the results
 // table (a solve's answers with their brackets; a grid's verdicts and governing checks, the
-// first 60), the design charts (sweep_charts) and what was varied, as notes.
+// first 40), the design charts (sweep_charts) and what was varied, as notes.
 #include <string>
 #include <vector>
 

@@ -49,8 +49,8 @@ CriticalPoint table_point(const FlowFunction& f, double ff) {
     if (x > at_x.back()) at_x.push_back(x);
   double far = 2.0 * xs.back() + 1.0;
   const int end_sign = [&] {
-    const double slope = (f.table()->y().back() - f.table()->y()[xs.size() - 2]) /
-                         (xs.back() - xs[xs.size() - 2]);
+    const double slope =
+        (f.table()->y().back() - f.table()->y()[xs.size() - 2]) / (xs.back() - xs[xs.size() - 2]);
     if (slope > 1.0 / ff) return 1;
     if (slope < 1.0 / ff) return -1;
     return g(xs.back()) > 0.0 ? 1 : -1;
@@ -73,27 +73,16 @@ CriticalPoint table_point(const FlowFunction& f, double ff) {
   return p;
 }
 
-CriticalOutlet outlet_from(const CriticalPoint& p, double arch_factor,
-                           const BulkDensity& density, double gravity, std::string model) {
-  CriticalOutlet o{p.outcome, 0.0, arch_factor, p.major_stress, p.strength,
-                   density.at(p.major_stress), p.extrapolated, std::move(model), {}};
-  switch (p.outcome) {
-    case ArchingOutcome::critical_width:
-      o.width = arching_width(arch_factor, p.strength, o.bulk_density, gravity);
-      o.statement = format("arches below %.1f mm (sigma_c,crit %.3g Pa at sigma1 %.3g Pa)",
-                           o.width * 1e3, p.strength, p.major_stress);
-      if (p.extrapolated) o.statement += "; the flow function was extrapolated beyond its table";
-      break;
-    case ArchingOutcome::no_cohesive_arch:
-      o.statement = "no cohesive arch (B_c = 0): the flow function lies below the flow-factor "
-                    "line at every stress; mechanical arching is not excluded";
-      break;
-    case ArchingOutcome::no_gravity_outlet:
-      o.width = kInfinity;
-      o.statement = "no gravity outlet prevents arching: the flow function lies above the "
-                    "flow-factor line at high stress; flow aids are needed";
-      break;
-  }
+CriticalOutlet outlet_from(const CriticalPoint& p, double arch_factor, const BulkDensity& density,
+                           double gravity, std::string model) {
+  CriticalOutlet o{p.outcome,      0.0,
+                   arch_factor,    p.major_stress,
+                   p.strength,     density.at(p.major_stress),
+                   p.extrapolated, std::move(model)};
+  if (p.outcome == ArchingOutcome::critical_width)
+    o.width = arching_width(arch_factor, p.strength, o.bulk_density, gravity);
+  else if (p.outcome == ArchingOutcome::no_gravity_outlet)
+    o.width = kInfinity;
   return o;
 }
 
@@ -102,6 +91,22 @@ void require_flow_factor(double ff) {
 }
 
 }  // namespace
+
+std::string CriticalOutlet::statement() const {
+  switch (outcome) {
+    case ArchingOutcome::critical_width:
+      return format("arches below %.1f mm (sigma_c,crit %.3g Pa at sigma1 %.3g Pa)", width * 1e3,
+                    critical_strength, major_stress) +
+             (extrapolated ? "; the flow function was extrapolated beyond its table" : "");
+    case ArchingOutcome::no_cohesive_arch:
+      return "no cohesive arch (B_c = 0): the flow function lies below the flow-factor line at "
+             "every stress; mechanical arching is not excluded";
+    case ArchingOutcome::no_gravity_outlet:
+      return "no gravity outlet prevents arching: the flow function lies above the flow-factor "
+             "line at high stress; flow aids are needed";
+  }
+  return {};
+}
 
 const char* arching_label(ArchingOutcome o) {
   switch (o) {

@@ -40,7 +40,8 @@ struct CriticalOutlet {
   double bulk_density;       // rho_b(sigma1*) [kg/m^3]
   bool extrapolated;         // the flow function was read beyond its table
   std::string model;
-  std::string statement;     // the outcome in words
+
+  std::string statement() const;  // the outcome in words (made when asked: sweeps never ask)
 };
 
 // B = arch_factor * strength / (rho_b g) [m].
@@ -60,8 +61,7 @@ double static_arch_factor(double semi_angle, double wall_friction_angle);
 // falls on steep smooth walls, where the arch loses its wall support).
 CriticalOutlet static_arch_critical_outlet(double semi_angle, double wall_friction_angle,
                                            double flow_factor, const FlowFunction& ff_curve,
-                                           const BulkDensity& density,
-                                           double gravity = kGravity);
+                                           const BulkDensity& density, double gravity = kGravity);
 
 // Mechanical (interlocking) arching, outside continuum theory: B ~ (3...8) d_max.
 struct MechanicalArching {
@@ -69,8 +69,7 @@ struct MechanicalArching {
   double high;  // high_multiple * d_max [m]
   std::string model;
 };
-MechanicalArching mechanical_arching_width(double largest_particle_size,
-                                           double low_multiple = 3.0,
+MechanicalArching mechanical_arching_width(double largest_particle_size, double low_multiple = 3.0,
                                            double high_multiple = 8.0);
 
 // Plane flow needs a slot at least 3 outlet widths long.

@@ -80,14 +80,14 @@ TEST(HopperCriticalOutlet, CohesionlessAndHopelessLimits) {
     const auto o = jenike_critical_outlet(kPlane, 30 * kDegree, 1.3, f, rho);
     EXPECT_EQ(o.outcome, ArchingOutcome::no_cohesive_arch) << f.describe();
     EXPECT_EQ(o.width, 0.0) << f.describe();
-    EXPECT_NE(o.statement.find("B_c = 0"), std::string::npos);
+    EXPECT_NE(o.statement().find("B_c = 0"), std::string::npos);
   }
   for (const auto& f : {FlowFunction::linear(0.9, 50.0), FlowFunction::power_law(1.0, 1.2),
                         FlowFunction::tabulated({0, 100, 200}, {50, 100, 190})}) {
     const auto o = jenike_critical_outlet(kPlane, 30 * kDegree, 1.3, f, rho);
     EXPECT_EQ(o.outcome, ArchingOutcome::no_gravity_outlet) << f.describe();
     EXPECT_TRUE(std::isinf(o.width));
-    EXPECT_NE(o.statement.find("flow aids"), std::string::npos);
+    EXPECT_NE(o.statement().find("flow aids"), std::string::npos);
   }
 }
 

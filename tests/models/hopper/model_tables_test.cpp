@@ -64,7 +64,7 @@ TEST(ModelTables, FlowFactorRows) {
 // The critical-outlet rows: the envelope is the larger estimate, and a cone (no static arch)
 // falls back to Jenike in every row.
 TEST(ModelTables, CriticalOutletRows) {
-  CriticalOutlet jenike{ArchingOutcome::critical_width, 0.030, 1.0, 0, 0, 290, false, "Jenike", ""};
+  CriticalOutlet jenike{ArchingOutcome::critical_width, 0.030, 1.0, 0, 0, 290, false, "Jenike"};
   CriticalOutlet arch = jenike;
   arch.width = 0.035;
   arch.model = "static arch";
