@@ -35,6 +35,7 @@ struct SweepArguments {
   std::vector<std::string> vary;
   std::vector<std::string> models;
   std::string solve_for, target, solve_tolerance, sample, rung, time;
+  VerificationRequest verify;  // --verify, --budget, --tolerance, --width-tolerance
   bool report = false;
   CommandOptions options;
 };
@@ -145,7 +146,7 @@ std::optional<double> simulated_time(const std::string& text) {
 }
 
 // sweep.json, sweep.csv, sweep.txt (and the --json copy) written all or none.
-void write_sweep(const SweepArguments& args, const SweepRequest& request,
+void write_sweep(const SweepArguments& args, const SweepRequest& request, const Case& base,
                  const std::vector<SweepPoint>& answered, const SweepTiming& timing,
                  const std::filesystem::path& out, OutputFolder& claimed) {
   const std::string json = sweep_json(request, answered, timing, invocation());
@@ -156,7 +157,7 @@ void write_sweep(const SweepArguments& args, const SweepRequest& request,
   if (!args.options.json.empty() && !args.options.json_to_stdout())
     files.push_back({args.options.json, json, "--json"});
   if (args.report)
-    for (auto& f : report_files(out, sweep_record(request, answered, timing, invocation())))
+    for (auto& f : report_files(out, sweep_record(request, base, answered, timing, invocation())))
       files.push_back(std::move(f));
   const auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr,
                                      args.options.verbose, &claimed);
@@ -197,7 +198,7 @@ int run_reduced(const SweepArguments& args, const SweepRequest& request, const C
   timing.wall_seconds = seconds_since(start);
   const auto out = output_folder(args.options, base.name, "_sweep", true);
   OutputFolder claimed(*out, "--out");
-  write_sweep(args, request, answered, timing, *out, claimed);
+  write_sweep(args, request, base, answered, timing, *out, claimed);
   return kExitOk;
 }
 
@@ -205,7 +206,7 @@ int run_reduced(const SweepArguments& args, const SweepRequest& request, const C
 // the folder is claimed by rank 0 before any rank writes into it and kept between runs, so a
 // stopped sweep goes on where it stopped.
 int run_simulated(const SweepArguments& args, const SweepRequest& request, const Case& base,
-                  Solver solver, std::chrono::steady_clock::time_point start) {
+                  FullRungSweep sweep, std::chrono::steady_clock::time_point start) {
   const RankTeam& team = RankTeam::world();
   const auto out = output_folder(args.options, base.name, "_sweep", true);
   std::optional<OutputFolder> claimed;
@@ -221,16 +222,18 @@ int run_simulated(const SweepArguments& args, const SweepRequest& request, const
   }
   install_interrupt_handler();
   if (team.root() && args.options.human_output())
-    std::cout << "feedflow sweep: " << point_count(request) << " points on " << to_string(solver)
-              << " (" << (solver == Solver::cel ? "L2" : "L3") << "), " << team.size()
-              << (team.size() == 1 ? " rank" : " ranks") << " x " << omp_get_max_threads()
-              << (omp_get_max_threads() == 1 ? " thread" : " threads") << ", in " << out->string()
-              << "/points\n";
+    std::cout << "feedflow sweep: " << point_count(request) << " points "
+              << (sweep.verify ? "verified (--verify " + sweep.verify->mode + ")"
+                               : std::string("on ") + to_string(sweep.solver) +
+                                     (sweep.solver == Solver::cel ? " (L2)" : " (L3)"))
+              << ", " << team.size() << (team.size() == 1 ? " rank" : " ranks") << " x "
+              << omp_get_max_threads() << (omp_get_max_threads() == 1 ? " thread" : " threads")
+              << ", in " << out->string() << "/points\n";
   TerminalProgress progress =
       TerminalProgress::for_terminal(!(team.root() && args.options.human_output()));
   const auto points_start = std::chrono::steady_clock::now();
-  const FullRungOutcome outcome =
-      run_full_rung(request, {solver, simulated_time(args.time), *out}, team, progress);
+  sweep.folder = *out;
+  const FullRungOutcome outcome = run_full_rung(request, sweep, team, progress);
   if (!team.root()) return outcome.interrupted ? kExitInterrupted : kExitOk;
   SweepTiming timing;
   timing.point_seconds = seconds_since(points_start);
@@ -239,7 +242,7 @@ int run_simulated(const SweepArguments& args, const SweepRequest& request, const
   timing.made = outcome.made;
   timing.read_back = outcome.read_back;
   timing.wall_seconds = seconds_since(start);
-  write_sweep(args, request, outcome.points, timing, *out, *claimed);
+  write_sweep(args, request, base, outcome.points, timing, *out, *claimed);
   if (outcome.interrupted) {
     std::cerr << "feedflow: interrupted; run the same command again to go on (points done are "
                  "read back)\n";
@@ -254,16 +257,28 @@ int run_sweep(const SweepArguments& args) {
   SweepRequest request;
   const Case base = build_request(args, request);
   const std::optional<Solver> solver = full_rung_solver(args.rung);
+  const bool verify = args.verify.mode != "off";
   if (!solver && !args.time.empty())
     throw InputError("--time", args.time, "sets the simulated time of --rung L2 or L3 points");
-  if (solver && request.solve)
+  if (solver && verify)
+    throw InputError("--verify", args.verify.mode,
+                     "--rung " + args.rung +
+                         " simulates every point already; --verify escalates the design check's "
+                         "points where their decision needs it: give one of them");
+  if ((solver || verify) && request.solve)
     throw InputError("--solve-for", args.solve_for,
-                     "solves on the reduced rungs (L0, L1) in this version; on --rung " +
-                         args.rung +
-                         " vary the key with --vary and read the boundary off the points");
+                     "solves on the reduced rungs (L0, L1) in this version; with --rung or "
+                     "--verify vary the key with --vary and read the boundary off the points");
   if (team.root() && !args.options.quiet)
     for (const auto& w : base.warnings) std::cerr << "feedflow: warning: " << w << '\n';
-  if (solver) return run_simulated(args, request, base, *solver, start);
+  if (solver || verify) {
+    FullRungSweep sweep;
+    if (verify) sweep.verify = args.verify;
+    if (solver) sweep.solver = *solver;
+    sweep.time = simulated_time(args.time);
+    sweep.models = args.models;
+    return run_simulated(args, request, base, sweep, start);
+  }
   // The reduced rungs answer thousands of points a second on rank 0's threads.
   return team.root() ? run_reduced(args, request, base, start) : kExitOk;
 }
@@ -315,6 +330,26 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->type_name("L0|L2|L3");
   command->add_option("--time", args->time, "simulated time of each --rung L2|L3 point, e.g. 2s")
       ->type_name("TIME");
+  command
+      ->add_option("--verify", args->verify.mode,
+                   "verify each point as design --verify does (auto: where its decision is inside "
+                   "its band; cel; dem), in its own folder, shared among MPI ranks like --rung")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "auto", "cel", "dem"}))
+      ->type_name("RUNG");
+  command->add_option("--budget", args->verify.budget, "wall time a point's verification may take")
+      ->capture_default_str()
+      ->type_name("TIME");
+  command
+      ->add_option("--tolerance", args->verify.tolerance,
+                   "error bar a point's verification must reach")
+      ->capture_default_str()
+      ->type_name("FRACTION");
+  command
+      ->add_option("--width-tolerance", args->verify.width_tolerance,
+                   "--verify dem: bracket of the bisection on the outlet width")
+      ->capture_default_str()
+      ->type_name("WIDTH");
   command->add_option("--set", args->options.sets, "a case value every point takes (repeatable)")
       ->type_name("KEY=VALUE")
       ->take_all()

@@ -3,13 +3,16 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
 
 #include "designer/bench/bench_run.hpp"
+#include "designer/design/design_check.hpp"
 #include "designer/sweep/point_queue.hpp"
 #include "designer/sweep/sweep_grid.hpp"
+#include "models/core/commit.hpp"
 #include "models/os/interrupt_request.hpp"
 #include "reports/results_json.hpp"
 
@@ -29,12 +32,57 @@ BenchQuestion question_of(const SweepRequest& request) {
 BenchPoint bench_point_of(const SweepRequest& request, const FullRungSweep& sweep,
                           const std::vector<std::size_t>& index) {
   BenchPoint p;
-  p.solver = sweep.solver;
-  p.rung = sweep.solver == Solver::cel ? "L2" : "L3";
-  p.time = sweep.time;
+  if (!sweep.verify) {
+    p.solver = sweep.solver;
+    p.rung = sweep.solver == Solver::cel ? "L2" : "L3";
+    p.time = sweep.time;
+  }
+  p.models = sweep.models;
   for (std::size_t k = 0; k < request.axes.size(); ++k)
     p.sets.push_back(request.axes[k].case_key + "=" + request.axes[k].values[index[k]].text);
   return p;
+}
+
+// A verified point: the design check, verified in the point's folder, saved there as a run.
+BenchRun verified_point(const SweepRequest& request, const FullRungSweep& sweep,
+                        const BenchQuestion& question, const BenchPoint& point,
+                        const std::filesystem::path& folder, bool& made) {
+  const VerificationRequest& v = *sweep.verify;
+  const std::string invocation = bench_invocation(question, point) + " --verify " + v.mode +
+                                 " --tolerance " + v.tolerance + " --budget " + v.budget +
+                                 " --width-tolerance " + v.width_tolerance;
+  const std::string inputs = bench_inputs_fingerprint(question, point, "");
+  made = false;
+  if (auto saved = saved_bench_run(folder, invocation, inputs, false)) return std::move(*saved);
+  made = true;
+  BenchRun run;
+  run.invocation = invocation;
+  run.inputs = inputs;
+  run.commit = kCommit;
+  run.cores = omp_get_max_threads();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    VerificationRequest asked = v;
+    asked.case_file = question.case_file;
+    asked.sets = question.sets;
+    asked.sets.insert(asked.sets.end(), point.sets.begin(), point.sets.end());
+    asked.runs = folder / "runs";
+    asked.log = nullptr;
+    std::vector<SetOverride> overrides;
+    for (const auto& s : asked.sets) overrides.push_back(parse_set_override(s));
+    const Case c = load_case(request.parsed, overrides, request.materials);
+    DesignRecord record = design_check(c, request.models);
+    if (!verify_design(asked, c, record)) run.status = "interrupted";
+    const auto saved = to_json(record);
+    run.results = saved.at("results");
+    run.verdict = saved.at("verdict");
+  } catch (const std::exception& e) {  // the point says why; the sweep goes on
+    run.status = std::string("failed: ") + e.what();
+  }
+  run.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (run.status != "interrupted") save_bench_run(folder, run);
+  return run;
 }
 
 SweepPoint point_of_run(const BenchRun& run, const std::string& rung) {
@@ -47,7 +95,12 @@ SweepPoint point_of_run(const BenchRun& run, const std::string& rung) {
     return p;
   }
   p.results = estimates_from_json(run.results);
-  for (auto& [key, e] : p.results) e.model.clear();
+  Rung highest = Rung::L0;  // a verified point stands on the highest rung it reached
+  for (auto& [key, e] : p.results) {
+    e.model.clear();
+    highest = std::max(highest, e.rung);
+  }
+  if (rung.empty()) p.rung = to_string(highest);
   if (run.verdict.is_object()) {
     p.verdict = verdict_status_from_string(run.verdict.value("status", "unknown"));
     for (const auto& f : run.verdict.value("findings", nlohmann::ordered_json::array()))
@@ -101,7 +154,7 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
                    [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
 
   const BenchQuestion question = question_of(request);
-  const std::string rung = sweep.solver == Solver::cel ? "L2" : "L3";
+  const std::string rung = sweep.verify ? "" : sweep.solver == Solver::cel ? "L2" : "L3";
   nlohmann::ordered_json mine = nlohmann::ordered_json::object();  // point number -> run
   long long made = 0, read_back = 0, interrupted = 0;
   if (team.root()) progress.begin("sweep", static_cast<double>(n), "points started");
@@ -112,8 +165,10 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
       if (team.root()) progress.update(static_cast<double>(queue.handed_out()));
       const BenchPoint p = bench_point_of(request, sweep, point_index(request, point));
       bool was_made = false;
-      const BenchRun run =
-          run_or_read_back(question, p, "", point_folder(sweep.folder, point), was_made);
+      const auto folder = point_folder(sweep.folder, point);
+      const BenchRun run = sweep.verify
+                               ? verified_point(request, sweep, question, p, folder, was_made)
+                               : run_or_read_back(question, p, "", folder, was_made);
       (was_made ? made : read_back) += 1;
       mine[std::to_string(point)] = bench_run_json(run);
       if (run.status == "interrupted" || interrupt_requested()) {
@@ -148,7 +203,7 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
   for (std::size_t i = 0; i < n; ++i) {
     outcome.points[i].index = point_index(request, i);
     if (!seen[i]) {
-      outcome.points[i].rung = rung;
+      outcome.points[i].rung = rung.empty() ? "L0" : rung;
       outcome.points[i].error = "not run (the sweep was interrupted)";
     }
   }

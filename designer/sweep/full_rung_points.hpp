@@ -1,7 +1,9 @@
 #pragma once
 // `--rung L2|L3`: every point of a sweep as a full simulation of the case with the point's
-// values (CEL-FEM for L2, DEM for L3), each in its own folder below the sweep's
-// (points/p0007/, the simulation's files and run.json), shared among the ranks of a team
+// values (CEL-FEM for L2, DEM for L3); `--verify MODE`: every point's design check verified on a
+// full rung as `design --verify` does it (escalating where its decision is inside its band).
+// Each point has its own folder below the sweep's (points/p0007/: the simulation's files or the
+// verification's runs, and run.json), the points shared among the ranks of a team
 // (longest expected first) with each rank running its scene on its own threads. A point saved
 // by an earlier run of the same sweep (same command line for the point, same case and material
 // text) is read back, not run: a sweep that was stopped or killed goes on where it stopped.
@@ -11,11 +13,16 @@
 #include "designer/simulate/simulation_request.hpp"
 #include "designer/sweep/rank_team.hpp"
 #include "designer/sweep/sweep_point.hpp"
+#include "designer/verify/design_verification.hpp"
 #include "fullsim/common/progress_sink.hpp"
 
 namespace feedflow {
 
 struct FullRungSweep {
+  // --verify: the mode, budget and tolerances as typed (case, sets and runs are the point's);
+  // none: each point is one simulation with `solver`.
+  std::optional<VerificationRequest> verify;
+  std::vector<std::string> models;  // --model KEY=NAME as typed (part of a point's identity)
   Solver solver = Solver::cel;
   std::optional<double> time;    // [s] simulated time of each point (--time); none: the scene's
   std::filesystem::path folder;  // the sweep's output folder

@@ -74,22 +74,33 @@ Chart solved_chart(const SweepRequest& r, const Layout& l, const std::vector<Swe
           "solved to " + axis_value(s.axis, s.tolerance, 3).text + "; gaps: no value in " +
               s.axis.values.front().text + " .. " + s.axis.values.back().text + " meets it"};
   const double unit_si = s.axis.unit.empty() ? 1.0 : parse_unit(s.axis.unit).si;
-  int colour = 0;
-  for (const auto& [value, members] : curves(r, l, points)) {
+  const auto groups = curves(r, l, points);
+  for (const auto& [value, members] : groups) {
+    const int colour = static_cast<int>(c.series.size());
     ChartSeries line{curve_label(r, l, value).empty() ? label_of(s.axis) : curve_label(r, l, value),
                      r.sampled ? SeriesStyle::points : SeriesStyle::line,
                      {},
                      {},
                      {},
-                     colour++};
+                     colour};
+    ChartSeries band{"marginal", SeriesStyle::band, {}, {}, {}, colour};
+    bool banded = false;
     for (std::size_t n : members) {
       const auto& sol = points[n].solution;
-      line.x.push_back(number_of(r.axes[*l.x].values[points[n].index[*l.x]]));
-      line.y.push_back(sol && sol->outcome == SweepSolution::Outcome::solved ? sol->value / unit_si
-                                                                             : NAN);
+      const bool solved = sol && sol->outcome == SweepSolution::Outcome::solved;
+      const double x = number_of(r.axes[*l.x].values[points[n].index[*l.x]]);
+      line.x.push_back(x);
+      line.y.push_back(solved ? sol->value / unit_si : NAN);
+      band.x.push_back(x);
+      band.y.push_back(solved && sol->marginal_from ? *sol->marginal_from / unit_si : NAN);
+      band.y_upper.push_back(solved ? sol->value / unit_si : NAN);
+      banded = banded || (solved && sol->marginal_from);
     }
+    if (banded && groups.size() == 1 && !r.sampled) c.series.push_back(std::move(band));
     c.series.push_back(std::move(line));
   }
+  if (c.series.size() > 1 && c.series.front().style == SeriesStyle::band)
+    c.note += "; shaded: where the verdict is MARGINAL (inside the band of what it is held to)";
   return c;
 }
 

@@ -75,6 +75,7 @@ nlohmann::ordered_json solution_json(const SweepSolve& solve, const SweepSolutio
     j["text"] = s.text;
     j["value_si"] = s.value;
     j["meets"] = s.smallest ? "at and above" : "at and below";
+    if (s.marginal_from) j["marginal_from"] = in_axis_unit(a, *s.marginal_from);
   }
   if (s.outcome != SweepSolution::Outcome::never_met)
     j["bracket"] = {in_axis_unit(a, s.bracket_low), in_axis_unit(a, s.bracket_high)};

@@ -48,6 +48,9 @@ struct SweepSolution {
   double value = 0.0;    // SI: the meeting side of the final bracket (solved)
   std::string text;      // `value` in the axis unit
   double bracket_low = 0.0, bracket_high = 0.0;  // SI: the final bracket
+  // A pass target: where MARGINAL begins (SI), the design band's other edge (the smallest outlet
+  // that does not fail, below the smallest that passes).
+  std::optional<double> marginal_from;
   int evaluations = 0;
   int crossings = 0;  // times the condition changed along the scan (1 for a clean boundary)
   // Beyond the boundary (or at the nearest scanned value when never met): the value there

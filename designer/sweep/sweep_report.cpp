@@ -1,5 +1,6 @@
 #include "designer/sweep/sweep_report.hpp"
 
+#include "designer/design/case_inputs.hpp"
 #include "designer/sweep/sweep_charts.hpp"
 #include "models/units/quantity_parser.hpp"
 
@@ -55,9 +56,26 @@ Estimate row_of(const SweepRequest& r, const SweepPoint& p) {
 
 }  // namespace
 
-DesignRecord sweep_record(const SweepRequest& request, const std::vector<SweepPoint>& points,
-                          const SweepTiming& timing, const std::string& command_line) {
+DesignRecord sweep_record(const SweepRequest& request, const Case& base,
+                          const std::vector<SweepPoint>& points, const SweepTiming& timing,
+                          const std::string& command_line) {
   DesignRecord r;
+  r.kind = base.kind();
+  r.inputs = case_inputs(base);
+  std::vector<const SweepAxis*> varied;
+  for (const auto& a : request.axes) varied.push_back(&a);
+  if (request.solve) varied.push_back(&request.solve->axis);
+  for (const SweepAxis* a : varied) {
+    const std::string range = a->values.front().text + " .. " + a->values.back().text + " (" +
+                              std::to_string(a->values.size()) + " values)";
+    bool found = false;
+    for (auto& in : r.inputs)
+      if (in.key == a->case_key) {
+        in.display = "varied: " + range;
+        found = true;
+      }
+    if (!found) r.inputs.push_back({a->case_key, range, "", "varied: " + range, ""});
+  }
   r.case_name = std::filesystem::path(request.parsed.path).stem().string() + " sweep";
   r.case_file = request.parsed.path;
   r.description = "feedflow sweep: " + std::to_string(points.size()) + " points" +

@@ -10,7 +10,10 @@
 
 namespace feedflow {
 
-DesignRecord sweep_record(const SweepRequest& request, const std::vector<SweepPoint>& points,
-                          const SweepTiming& timing, const std::string& command_line);
+// `base`: the case with the fixed values; its inputs head the report, the varied ones showing
+// their ranges.
+DesignRecord sweep_record(const SweepRequest& request, const Case& base,
+                          const std::vector<SweepPoint>& points, const SweepTiming& timing,
+                          const std::string& command_line);
 
 }  // namespace feedflow

@@ -146,13 +146,18 @@ SweepPoint solve_point(const SweepRequest& request, const std::vector<std::size_
     return finish(p);
   }
 
+  // Narrows [lo, hi] (met differently at the two ends, by `met_by`) to the tolerance.
+  auto bisect = [&](Probe& lo, Probe& hi, auto met_by) {
+    for (int i = 0; i < kMaxBisections && hi.si - lo.si > solve.tolerance; ++i) {
+      Probe mid = probe(axis_value(axis, 0.5 * (lo.si + hi.si)));
+      const std::optional<bool> met = met_by(mid);
+      if (!met) break;  // the case refuses the value or the model does not answer: stop here
+      (*met == *met_by(lo) ? lo : hi) = std::move(mid);
+    }
+  };
   Probe lo = scan[known[*first]], hi = scan[known[*first + 1]];
   s.smallest = !*lo.met;
-  for (int i = 0; i < kMaxBisections && hi.si - lo.si > solve.tolerance; ++i) {
-    Probe mid = probe(axis_value(axis, 0.5 * (lo.si + hi.si)));
-    if (!mid.met) break;  // the case refuses the value or the model does not answer: stop here
-    (*mid.met == *lo.met ? lo : hi) = std::move(mid);
-  }
+  bisect(lo, hi, [](const Probe& p) { return p.met; });
   s.outcome = SweepSolution::Outcome::solved;
   s.bracket_low = lo.si;
   s.bracket_high = hi.si;
@@ -161,6 +166,23 @@ SweepPoint solve_point(const SweepRequest& request, const std::vector<std::size_
   s.value = meeting.si;
   s.text = axis_value(axis, meeting.si, digits_for(meeting.si, solve.tolerance)).text;
   describe_beyond(solve.target, axis, beyond, s);
+  // A pass target: where MARGINAL begins on the same side, the other edge of the design band.
+  if (solve.target.kind == SweepTarget::Kind::verdict &&
+      solve.target.worst_meeting == VerdictStatus::pass) {
+    const SweepTarget not_fail = parse_sweep_target("not-fail");
+    auto not_failing = [&](const Probe& p) -> std::optional<bool> {
+      if (!p.point.done) return std::nullopt;
+      return meets_target(not_fail, p.point.verdict, p.point.results);
+    };
+    for (std::size_t k = 0; k + 1 < scan.size(); ++k) {
+      const auto a = not_failing(scan[k]), b = not_failing(scan[k + 1]);
+      if (!a || !b || *a == *b || *b != s.smallest) continue;
+      Probe m_lo = scan[k], m_hi = scan[k + 1];
+      bisect(m_lo, m_hi, not_failing);
+      s.marginal_from = s.smallest ? m_hi.si : m_lo.si;
+      break;
+    }
+  }
   return finish(meeting.point);
 }
 

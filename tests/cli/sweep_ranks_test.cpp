@@ -24,7 +24,7 @@ class SweepRanks : public ::testing::Test {
  protected:
   void SetUp() override { dir_ = scratch_folder("feedflow_sweep_ranks", true); }
   void TearDown() override { fs::remove_all(dir_); }
-  nlohmann::json sweep(const std::string& out) const {
+  nlohmann::json sweep_json(const std::string& out) const {
     return nlohmann::json::parse(slurp(dir_ / out / "sweep.json"));
   }
   fs::path dir_;
@@ -53,7 +53,7 @@ void expect_same_points(const nlohmann::json& a, const nlohmann::json& b) {
 TEST_F(SweepRanks, TwoRanksGiveTheSerialResultsAndRerunsReadPointsBack) {
   const auto serial = run_feedflow(kSweep + "--out serial", dir_);
   ASSERT_EQ(serial.exit_code, 0) << serial.err;
-  const auto s = sweep("serial");
+  const auto s = sweep_json("serial");
   ASSERT_EQ(s.at("points").size(), 4u);
   for (const auto& p : s.at("points")) {
     EXPECT_EQ(p.at("status"), "done") << p.dump();
@@ -69,7 +69,7 @@ TEST_F(SweepRanks, TwoRanksGiveTheSerialResultsAndRerunsReadPointsBack) {
   const std::string command =
       "cd '" + dir_.string() + "' && " + mpirun + kSweep + "--out ranks > ranks.out 2> ranks.err";
   ASSERT_EQ(std::system(command.c_str()), 0) << slurp(dir_ / "ranks.err");
-  const auto r = sweep("ranks");
+  const auto r = sweep_json("ranks");
   EXPECT_EQ(r.at("timing").at("ranks"), 2);
   EXPECT_EQ(r.at("timing").at("points_run"), 4);
   expect_same_points(s, r);
@@ -77,17 +77,38 @@ TEST_F(SweepRanks, TwoRanksGiveTheSerialResultsAndRerunsReadPointsBack) {
   // Again: every point is read back, none run.
   const auto again = run_feedflow(kSweep + "--out serial", dir_);
   ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_EQ(sweep("serial").at("timing").at("points_read_back"), 4);
-  EXPECT_EQ(sweep("serial").at("timing").at("points_run"), 0);
-  expect_same_points(s, sweep("serial"));
+  EXPECT_EQ(sweep_json("serial").at("timing").at("points_read_back"), 4);
+  EXPECT_EQ(sweep_json("serial").at("timing").at("points_run"), 0);
+  expect_same_points(s, sweep_json("serial"));
 
   // A point killed before it saved its run: only that one is run again.
   fs::remove(dir_ / "serial/points/p0002/run.json");
   const auto resumed = run_feedflow(kSweep + "--out serial", dir_);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_EQ(sweep("serial").at("timing").at("points_run"), 1);
-  EXPECT_EQ(sweep("serial").at("timing").at("points_read_back"), 3);
-  expect_same_points(s, sweep("serial"));
+  EXPECT_EQ(sweep_json("serial").at("timing").at("points_run"), 1);
+  EXPECT_EQ(sweep_json("serial").at("timing").at("points_read_back"), 3);
+  expect_same_points(s, sweep_json("serial"));
+}
+
+// --verify cel: each point's discharge rate verified on the continuum rung as design --verify
+// does it: the point stands on L2 with the CEL rate (its band from the Richardson error bar) and
+// the verdict says verified; run again, the point is read back.
+TEST_F(SweepRanks, VerifiedPointsStandOnTheContinuumRung) {
+  const std::string sweep =
+      "sweep cases/pilot_hopper.toml --vary \"hopper.outlet_width=200 mm\" --verify cel "
+      "--tolerance 40% --out v";
+  const auto r = run_feedflow(sweep, dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = sweep_json("v");
+  const auto& p = j.at("points").at(0);
+  EXPECT_EQ(p.at("rung"), "L2") << p.dump();
+  const auto run = nlohmann::json::parse(slurp(dir_ / "v/points/p0000/run.json"));
+  EXPECT_EQ(run.at("results").at("mass_flow_rate").at("rung"), "L2");
+  EXPECT_NE(run.at("verdict").at("reasons").dump().find("mass flow rate verified on the "
+                                                        "continuum rung"),
+            std::string::npos);
+  ASSERT_EQ(run_feedflow(sweep, dir_).exit_code, 0);
+  EXPECT_EQ(sweep_json("v").at("timing").at("points_read_back"), 1);
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ SweepPoint at(const SweepRequest& r, double si) {
 
 // The smallest passing outlet is the arching rule's analytic boundary, safety factor x the top of
 // the critical width's band (hopper_judge), to the tolerance, and it passes while a tolerance
-// below it does not.
+// below it does not; MARGINAL starts at safety factor x B_c.
 TEST(SweepSolve, SmallestPassingOutletIsTheArchingRulesBoundary) {
   const double tol = 1e-5;  // 0.01 mm
   const SweepRequest r = pilot_solve("hopper.outlet_width=20..100mm:9", "pass", tol);
@@ -54,7 +54,10 @@ TEST(SweepSolve, SmallestPassingOutletIsTheArchingRulesBoundary) {
   ASSERT_TRUE(bc && bc->high);
   EXPECT_NEAR(s.value, 1.2 * *bc->high, tol);
   EXPECT_LE(s.bracket_high - s.bracket_low, tol);
-  EXPECT_LT(s.evaluations, 9 + 20);  // the scan and a bisection, not a fine scan
+  // MARGINAL begins at safety factor x B_c itself, the band's other edge.
+  ASSERT_TRUE(s.marginal_from.has_value());
+  EXPECT_NEAR(*s.marginal_from, 1.2 * std::get<double>(bc->value), tol);
+  EXPECT_LT(s.evaluations, 9 + 2 * 20);  // the scan and two bisections, not a fine scan
 }
 
 // The largest semi-angle with mass flow is the mass-flow limit angle the check reports.
