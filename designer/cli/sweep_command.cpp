@@ -207,6 +207,13 @@ int run_reduced(const SweepArguments& args, const SweepRequest& request, const C
 // stopped sweep goes on where it stopped.
 int run_simulated(const SweepArguments& args, const SweepRequest& request, const Case& base,
                   FullRungSweep sweep, std::chrono::steady_clock::time_point start) {
+  // A solve with --verify: every rank solves on the reduced rungs (the same answers, in
+  // milliseconds), then the answers are verified as points.
+  std::optional<std::vector<SweepPoint>> solved;
+  if (request.solve) {
+    SilentProgress quiet;
+    solved = run_grid(request, quiet);
+  }
   const RankTeam& team = RankTeam::world();
   const auto out = output_folder(args.options, base.name, "_sweep", true);
   std::optional<OutputFolder> claimed;
@@ -233,7 +240,8 @@ int run_simulated(const SweepArguments& args, const SweepRequest& request, const
       TerminalProgress::for_terminal(!(team.root() && args.options.human_output()));
   const auto points_start = std::chrono::steady_clock::now();
   sweep.folder = *out;
-  const FullRungOutcome outcome = run_full_rung(request, sweep, team, progress);
+  const FullRungOutcome outcome =
+      run_full_rung(request, sweep, team, progress, solved ? &*solved : nullptr);
   if (!team.root()) return outcome.interrupted ? kExitInterrupted : kExitOk;
   SweepTiming timing;
   timing.point_seconds = seconds_since(points_start);
@@ -265,10 +273,11 @@ int run_sweep(const SweepArguments& args) {
                      "--rung " + args.rung +
                          " simulates every point already; --verify escalates the design check's "
                          "points where their decision needs it: give one of them");
-  if ((solver || verify) && request.solve)
+  if (solver && request.solve)
     throw InputError("--solve-for", args.solve_for,
-                     "solves on the reduced rungs (L0, L1) in this version; with --rung or "
-                     "--verify vary the key with --vary and read the boundary off the points");
+                     "solves on the reduced rungs (L0, L1) in this version, and --verify checks "
+                     "each answer on a full rung; with --rung vary the key with --vary and read "
+                     "the boundary off the points");
   if (team.root() && !args.options.quiet)
     for (const auto& w : base.warnings) std::cerr << "feedflow: warning: " << w << '\n';
   if (solver || verify) {

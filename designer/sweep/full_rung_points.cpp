@@ -124,6 +124,13 @@ double cost_power(const std::string& key) {
   return 0.0;
 }
 
+// A solved point's answer, where it has one.
+const SweepSolution* answered(const std::vector<SweepPoint>* solved, std::size_t point) {
+  if (!solved || !(*solved)[point].solution) return nullptr;
+  const SweepSolution& s = *(*solved)[point].solution;
+  return s.outcome == SweepSolution::Outcome::solved ? &s : nullptr;
+}
+
 }  // namespace
 
 std::filesystem::path point_folder(const std::filesystem::path& sweep_folder, std::size_t n) {
@@ -144,7 +151,8 @@ double expected_cost(const SweepRequest& request, const std::vector<std::size_t>
 }
 
 FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& sweep,
-                              const RankTeam& team, ProgressSink& progress) {
+                              const RankTeam& team, ProgressSink& progress,
+                              const std::vector<SweepPoint>* solved) {
   const std::size_t n = point_count(request);
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
@@ -163,7 +171,10 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
     while (const auto position = queue.next()) {
       const std::size_t point = order[*position];
       if (team.root()) progress.update(static_cast<double>(queue.handed_out()));
-      const BenchPoint p = bench_point_of(request, sweep, point_index(request, point));
+      if (solved && !answered(solved, point)) continue;  // nothing to verify: keeps its solve
+      BenchPoint p = bench_point_of(request, sweep, point_index(request, point));
+      if (const SweepSolution* s = answered(solved, point))
+        p.sets.push_back(request.solve->axis.case_key + "=" + s->text);
       bool was_made = false;
       const auto folder = point_folder(sweep.folder, point);
       const BenchRun run = sweep.verify
@@ -201,6 +212,13 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
+    if (solved) {  // the solve, with the verification's answers at its value when there is one
+      if (!answered(solved, i)) {
+        outcome.points[i] = (*solved)[i];
+        continue;
+      }
+      outcome.points[i].solution = (*solved)[i].solution;
+    }
     outcome.points[i].index = point_index(request, i);
     if (!seen[i]) {
       outcome.points[i].rung = rung.empty() ? "L0" : rung;

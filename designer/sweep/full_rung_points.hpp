@@ -43,7 +43,10 @@ struct FullRungOutcome {
 };
 
 // Runs (or reads back) every point, shared among the team; the points come back at rank 0.
+// `solved` (a solve with --verify): the reduced solves of every point, each verified at its
+// answer (a point whose target was not met in the range is not run and keeps its solve).
 FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& sweep,
-                              const RankTeam& team, ProgressSink& progress);
+                              const RankTeam& team, ProgressSink& progress,
+                              const std::vector<SweepPoint>* solved = nullptr);
 
 }  // namespace feedflow

@@ -99,6 +99,19 @@ Chart solved_chart(const SweepRequest& r, const Layout& l, const std::vector<Swe
     if (banded && groups.size() == 1 && !r.sampled) c.series.push_back(std::move(band));
     c.series.push_back(std::move(line));
   }
+  // --verify: each answer as the full rung judged it there.
+  ChartSeries held{"full rung passes", SeriesStyle::points, {}, {}, {}, 2};
+  ChartSeries refuted{"full rung does not pass", SeriesStyle::points, {}, {}, {}, 1};
+  for (const auto& p : points) {
+    const auto& sol = p.solution;
+    if (p.rung == "L0" || !p.done || !sol || sol->outcome != SweepSolution::Outcome::solved)
+      continue;
+    ChartSeries& to = p.verdict == VerdictStatus::pass ? held : refuted;
+    to.x.push_back(number_of(r.axes[*l.x].values[p.index[*l.x]]));
+    to.y.push_back(sol->value / unit_si);
+  }
+  for (auto* verified : {&held, &refuted})
+    if (!verified->x.empty()) c.series.push_back(std::move(*verified));
   if (c.series.size() > 1 && c.series.front().style == SeriesStyle::band)
     c.note += "; shaded: where the verdict is MARGINAL (inside the band of what it is held to)";
   return c;

@@ -62,9 +62,11 @@ const char* outcome_name(SweepSolution::Outcome o) {
   return "";
 }
 
+// done; refused (the case refuses the values); failed (a simulation could not answer); not met.
 std::string point_status(const SweepPoint& p) {
   if (p.solution && p.solution->outcome == SweepSolution::Outcome::never_met) return "not met";
-  return p.done ? "done" : "refused";
+  if (p.done) return "done";
+  return p.rung == "L0" ? "refused" : "failed";
 }
 
 nlohmann::ordered_json solution_json(const SweepSolve& solve, const SweepSolution& s) {
@@ -286,7 +288,7 @@ std::string sweep_summary(const SweepRequest& request, const std::vector<SweepPo
   for (const auto& p : points)
     ++counts[p.solution ? outcome_name(p.solution->outcome)
              : p.done   ? to_string(p.verdict)
-                        : "refused"];
+                        : point_status(p)];
   out << "\n" << points.size() << " points:";
   for (const auto& [what, n] : counts) out << " " << what << " x" << n;
   out << "\n";
@@ -299,8 +301,11 @@ std::string sweep_summary(const SweepRequest& request, const std::vector<SweepPo
       line += (k ? ", " : "") + request.axes[k].key + " = " + shown(request.axes[k], p.index[k]);
     if (p.solution) {
       line += (line.size() > 2 ? ": " : "") + solution_words(*request.solve, p);
+      if (p.rung != "L0" && p.solution->outcome == SweepSolution::Outcome::solved)
+        line += p.done ? "; verified there on " + p.rung + ": " + to_string(p.verdict)
+                       : "; not verified: " + p.error;
     } else if (!p.done) {
-      line += ": refused: " + p.error;
+      line += ": " + point_status(p) + ": " + p.error;
     } else {
       line += ": " + std::string(to_string(p.verdict));
       if (!p.governing.empty() && p.verdict != VerdictStatus::pass) {

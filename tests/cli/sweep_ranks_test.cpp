@@ -111,4 +111,42 @@ TEST_F(SweepRanks, VerifiedPointsStandOnTheContinuumRung) {
   EXPECT_EQ(sweep_json("v").at("timing").at("points_read_back"), 1);
 }
 
+// --solve-for with --verify cel: the outlet that delivers 25 kg/s is solved on the reduced rung,
+// then checked there on the continuum rung: the point keeps its solve and stands on L2, its run
+// made at the solved width.
+TEST_F(SweepRanks, SolvedAnswersAreVerifiedWhereTheyLie) {
+  const auto r = run_feedflow(
+      "sweep cases/pilot_hopper.toml --solve-for hopper.outlet_width=120..240mm:4 "
+      "--target mass_flow_rate=25kg/s --solve-tolerance 1mm --verify cel --tolerance 40% --out sv",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = sweep_json("sv");
+  const auto& p = j.at("points").at(0);
+  ASSERT_EQ(p.at("solution").at("outcome"), "solved") << p.dump();
+  EXPECT_EQ(p.at("rung"), "L2");
+  const auto run = nlohmann::json::parse(slurp(dir_ / "sv/points/p0000/run.json"));
+  EXPECT_NE(run.at("invocation")
+                .get<std::string>()
+                .find("hopper.outlet_width=" + p.at("solution").at("text").get<std::string>()),
+            std::string::npos);
+  EXPECT_EQ(run.at("results").at("mass_flow_rate").at("rung"), "L2");
+  EXPECT_NE(r.out.find("verified there on L2"), std::string::npos) << r.out;
+}
+
+// A point the solver refuses (20 mm cells put 1.5 across a 60 mm outlet's half) is recorded
+// with its reason and the sweep goes on to the next.
+TEST_F(SweepRanks, AFailedPointIsRecordedAndTheSweepGoesOn) {
+  const auto r = run_feedflow(
+      "sweep cases/pilot_hopper.toml --rung L2 --vary \"hopper.outlet_width=60,160 mm\" "
+      "--set cel.cell_size=20mm --time 0.01s --out f",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = sweep_json("f");
+  EXPECT_EQ(j.at("points").at(0).at("status"), "failed");
+  EXPECT_NE(
+      j.at("points").at(0).at("reason").get<std::string>().find("cells across the half outlet"),
+      std::string::npos);
+  EXPECT_EQ(j.at("points").at(1).at("status"), "done");
+}
+
 }  // namespace
