@@ -8,7 +8,10 @@ namespace feedflow {
 
 WallSpeedRatio wall_to_centre_speed_ratio(const SpeedProfile& line) {
   WallSpeedRatio r;
-  if (line.speed.empty() || !(line.speed.front() > 0.0)) return r;
+  // A line with fewer points than kMinProfilePoints has no wall and centre to compare (a funnel
+  // that emptied the centre of the line leaves a point or two at the wall: read as its own
+  // centre, it gave a ratio of exactly 1, "mass").
+  if (line.speed.size() < kMinProfilePoints || !(line.speed.front() > 0.0)) return r;
   r.ratio = line.speed.back() / line.speed.front();
   r.measured = true;
   const double moving = kMassFlowSpeedRatio * line.speed.front();

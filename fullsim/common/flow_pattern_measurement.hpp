@@ -5,6 +5,7 @@
 // the run and averaged over the steady discharge window. Mass flow when the material at the
 // wall moves at more than a tenth of the centre line's speed (the whole content moves); funnel
 // flow when it stands (a stagnant zone along the wall).
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,12 @@ struct WallSpeedRatio {
   std::string label() const { return ratio > kMassFlowSpeedRatio ? "mass" : "funnel"; }
 };
 
+// Points a profile needs before it measures anything.
+inline constexpr std::size_t kMinProfilePoints = 3;
+
 // The speed of the outermost point over that of the innermost, and the dead zone's extent on
 // the line: from the outermost point in to the outermost one that moves at more than a tenth of
-// the innermost (0 when the outermost does).
+// the innermost (0 when the outermost does). Not measured with fewer than kMinProfilePoints.
 WallSpeedRatio wall_to_centre_speed_ratio(const SpeedProfile& line);
 
 // The line sampled through a run: the ratio of its time-averaged profile over a window (each

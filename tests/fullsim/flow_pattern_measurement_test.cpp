@@ -21,7 +21,8 @@ SpeedProfile line(double wall, int points) {
 }
 
 // Mass flow when the wall moves at more than a tenth of the centre; funnel flow when it stands;
-// an empty line or a centre at rest measures nothing.
+// an empty line, a centre at rest or a line of one or two points (a funnel that emptied the
+// line's centre) measures nothing.
 TEST(FlowPatternMeasurement, WallToCentreSpeedRatio) {
   EXPECT_EQ(wall_to_centre_speed_ratio(line(0.5, 5)).label(), "mass");
   EXPECT_EQ(wall_to_centre_speed_ratio(line(0.02, 5)).label(), "funnel");
@@ -32,6 +33,9 @@ TEST(FlowPatternMeasurement, WallToCentreSpeedRatio) {
   EXPECT_NEAR(wall_to_centre_speed_ratio(line(0.02, 5)).stagnant_width, 0.01, 1e-15);
   EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{}).measured);
   EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{{0.0, 0.1}, {0.0, 0.3}}).measured);
+  EXPECT_FALSE(wall_to_centre_speed_ratio(line(0.5, 2)).measured);
+  EXPECT_FALSE(wall_to_centre_speed_ratio(SpeedProfile{{0.05}, {0.2}}).measured);
+  EXPECT_TRUE(wall_to_centre_speed_ratio(line(0.5, 3)).measured);
 }
 
 // Averaged over the window's samples, offset by offset; an outer point that had material in
