@@ -297,7 +297,9 @@ int run_sweep(const SweepArguments& args) {
 void add_sweep_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SweepArguments>();
   auto* command = app.add_subcommand(
-      "sweep", "what-if analysis: the design check over a grid of case values, in this process");
+      "sweep",
+      "what-if analysis: the design check over a grid, a sample or a solve, in this process; "
+      "with --rung or --verify each point simulated, shared among MPI ranks");
   command->add_option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
       ->required()
       ->type_name("CASE");

@@ -175,11 +175,15 @@ FullRungOutcome run_full_rung(const SweepRequest& request, const FullRungSweep& 
       BenchPoint p = bench_point_of(request, sweep, point_index(request, point));
       if (const SweepSolution* s = answered(solved, point))
         p.sets.push_back(request.solve->axis.case_key + "=" + s->text);
-      bool was_made = false;
+      bool was_made = true;
       const auto folder = point_folder(sweep.folder, point);
-      const BenchRun run = sweep.verify
-                               ? verified_point(request, sweep, question, p, folder, was_made)
-                               : run_or_read_back(question, p, "", folder, was_made);
+      BenchRun run;
+      try {  // a rank must not leave the team over one point (a full disk): the others wait
+        run = sweep.verify ? verified_point(request, sweep, question, p, folder, was_made)
+                           : run_or_read_back(question, p, "", folder, was_made);
+      } catch (const std::exception& e) {
+        run.status = std::string("failed: ") + e.what();
+      }
       (was_made ? made : read_back) += 1;
       mine[std::to_string(point)] = bench_run_json(run);
       if (run.status == "interrupted" || interrupt_requested()) {
