@@ -207,6 +207,8 @@ CaseKeyKind case_key_kind(const std::string& case_key) {
   return {};
 }
 
+double axis_unit_si(const SweepAxis& axis) { return unit_of(axis.unit, axis.key).si; }
+
 SweepValue axis_value(const SweepAxis& axis, double si, int significant) {
   return value_of(si / unit_of(axis.unit, axis.key).si, axis.unit, axis.key, significant);
 }

@@ -51,6 +51,9 @@ CaseKeyKind case_key_kind(const std::string& case_key);
 // Parses "KEY=RANGE" (the text after `flag`); InputError naming the flag on any fault.
 SweepAxis parse_sweep_axis(const std::string& text, const std::string& flag = "--vary");
 
+// The SI value of one of the axis's unit (1 for pure numbers).
+double axis_unit_si(const SweepAxis& axis);
+
 // A value of a numeric axis from its SI value, written in the axis unit with `significant`
 // digits ("37.25 mm").
 SweepValue axis_value(const SweepAxis& axis, double si, int significant = 12);

@@ -73,7 +73,7 @@ Chart solved_chart(const SweepRequest& r, const Layout& l, const std::vector<Swe
           {},
           "solved to " + axis_value(s.axis, s.tolerance, 3).text + "; gaps: no value in " +
               s.axis.values.front().text + " .. " + s.axis.values.back().text + " meets it"};
-  const double unit_si = s.axis.unit.empty() ? 1.0 : parse_unit(s.axis.unit).si;
+  const double unit_si = axis_unit_si(s.axis);
   const auto groups = curves(r, l, points);
   for (const auto& [value, members] : groups) {
     const int colour = static_cast<int>(c.series.size());

@@ -2,7 +2,6 @@
 
 #include "designer/design/case_inputs.hpp"
 #include "designer/sweep/sweep_charts.hpp"
-#include "models/units/quantity_parser.hpp"
 
 namespace feedflow {
 namespace {
@@ -28,7 +27,7 @@ Estimate row_of(const SweepRequest& r, const SweepPoint& p) {
   e.rung = p.rung == "L3" ? Rung::L3 : p.rung == "L2" ? Rung::L2 : Rung::L0;
   if (p.solution && p.solution->outcome == SweepSolution::Outcome::solved) {
     const SweepAxis& a = r.solve->axis;
-    const double unit_si = a.unit.empty() ? 1.0 : parse_unit(a.unit).si;
+    const double unit_si = axis_unit_si(a);
     e.value = p.solution->value / unit_si;
     e.unit = a.unit;
     e.low = p.solution->bracket_low / unit_si;
