@@ -20,6 +20,7 @@
 #include "designer/simulate/simulation.hpp"
 #include "designer/simulate/simulation_pictures.hpp"
 #include "designer/simulate/solver_choice.hpp"
+#include "designer/sweep/rank_team.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/atomic_file.hpp"
 #include "models/os/interrupt_request.hpp"
@@ -42,6 +43,13 @@ struct SimulateArguments {
 
 int run_simulate(const SimulateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
+  // Under a launcher with several ranks each would run the whole scene into the same folder.
+  if (RankTeam::world().size() > 1)
+    throw InputError("mpirun", "",
+                     "feedflow simulate runs its scenes in one process yet (the DEM engine shares "
+                     "a run among MPI ranks, the hopper, drum and chute scenes do not yet): run it "
+                     "without mpirun; under mpirun, `feedflow sweep --rung L2|L3` shares whole "
+                     "runs among the ranks");
   std::vector<SetOverride> overrides;
   for (const auto& s : args.options.sets) overrides.push_back(parse_set_override(s));
   std::optional<Solver> asked;

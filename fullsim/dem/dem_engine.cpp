@@ -1,10 +1,12 @@
 #include "fullsim/dem/dem_engine.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,6 +16,7 @@
 
 #include "fullsim/dem/morton_order.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
+#include "fullsim/dem/ranks/gathered_checkpoint.hpp"
 #include "models/core/errors.hpp"
 
 // force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
@@ -27,6 +30,15 @@ std::string format(const char* fmt, auto... args) {
   char buf[700];
   std::snprintf(buf, sizeof buf, fmt, args...);
   return buf;
+}
+
+// Kinetic energy of translation and rotation of the first n slots [J].
+double kinetic_energy_of(const ParticleStore& p, std::size_t n) {
+  double e = 0.0;
+  for (std::size_t k = 0; k < n; ++k)
+    e += 0.5 * p.mass[k] * p.velocity[k].squaredNorm() +
+         0.5 * p.inertia[k] * p.angular_velocity[k].squaredNorm();
+  return e;
 }
 
 int thread_count() {
@@ -53,6 +65,11 @@ DemEngine::DemEngine(DemSettings settings, DemCheckpoint checkpoint)
       particle_steps_(checkpoint.particle_steps),
       particle_steps_before_(checkpoint.particle_steps) {
   pending_ = std::make_unique<DemCheckpoint>(std::move(checkpoint));
+  // Shared among ranks, the sink's books (what left before the checkpoint) are the first
+  // rank's, so that their sum over the ranks is what the checkpoint booked.
+  if (sink_ && shared() && settings_.ranks.rank() != 0)
+    sink_ = OutletSink::restored(sink_->is_box(), sink_->lower_or_point(),
+                                 sink_->upper_or_outward(), 0.0, {});
 }
 
 DemEngine::~DemEngine() = default;
@@ -81,11 +98,24 @@ DemCheckpoint DemEngine::checkpoint() const {
   c.guard_energy_floor = guard_.energy_floor();
   c.guard_gravity_work = guard_.gravity_work();
   c.guard_wall_speed = guard_.wall_speed();
+  if (shared()) return gather_checkpoint(std::move(c), owned_count(), settings_.ranks);
   return c;
 }
 
 void DemEngine::write_checkpoint(const std::filesystem::path& path) const {
-  write_dem_checkpoint(path, checkpoint());
+  const DemCheckpoint c = checkpoint();
+  if (!shared()) {
+    write_dem_checkpoint(path, c);
+    return;
+  }
+  // The first rank writes the gathered checkpoint; a failure there stops every rank.
+  std::optional<std::string> failure;
+  if (settings_.ranks.rank() == 0) try {
+      write_dem_checkpoint(path, c);
+    } catch (const std::runtime_error& e) {
+      failure = e.what();
+    }
+  if (auto agreed = settings_.ranks.agree_on_failure(failure)) throw std::runtime_error(*agreed);
 }
 
 double DemEngine::fastest_wall_surface_speed() const {
@@ -156,6 +186,9 @@ void DemEngine::set_outlet_sink(OutletSink sink) { sink_ = std::move(sink); }
 
 std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double density,
                                          double layer, const Vec3& velocity) {
+  if (prepared_ && shared())
+    throw std::logic_error("DemEngine: inserting particles into a run shared among ranks is not "
+                           "done yet: fill before prepare()");
   const std::uint32_t id = particles_.add(x, radius, density, layer, velocity);
   if (prepared_) {
     const std::size_t k = particles_.size() - 1;
@@ -167,6 +200,9 @@ std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double de
 }
 
 void DemEngine::remove_particles(const std::vector<char>& flagged) {
+  if (prepared_ && shared())
+    throw std::logic_error("DemEngine: removing particles from a run shared among ranks is not "
+                           "done yet");
   if (flagged.size() != particles_.size())
     throw std::invalid_argument("DemEngine::remove_particles: one flag per particle expected");
   particles_.remove_flagged(flagged);
@@ -204,7 +240,7 @@ void DemEngine::prepare(std::ostream& out) {
     skipped_.push_back("cohesion: none (normal force clipped at zero, no contact pulls)");
   kernel_ = make_force_kernel(effective_law_, dem);
 
-  const double rmax = particles_.max_radius();
+  const double rmax = settings_.ranks.max(particles_.max_radius());
   if (!(rmax > 0.0)) throw InputError("", "dem.particles", "no particles, or a zero radius");
   const double cutoff = 2.0 * rmax * (1.0 + settings_.skin_fraction);
   for (int a = 0; a < 3; ++a)
@@ -239,22 +275,34 @@ void DemEngine::prepare(std::ostream& out) {
     // the uninterrupted run took it from, and the continued run would differ from it).
     restore_prepared_state();
     // Within the skin of where they stand now: they stand within half of it from the restored
-    // list's positions, and move at most half of it more before its next rebuild.
-    wall_reach_.update(particles_, walls_, meshes_, neighbours_.skin());
+    // list's positions, and move at most half of it more before its next rebuild. Shared
+    // among ranks, every rank read the whole checkpoint: each keeps its share, and the list
+    // is rebuilt with the restored contacts' history carried over by their id pairs.
+    if (shared()) distribute();
+    else wall_reach_.update(particles_, walls_, meshes_, neighbours_.skin());
     if (v_wall > 0.0 && guard_.wall_speed() == 0.0)
       guard_.allow_moving_walls(0.5 * mass * (v_design * v_design + v_fed * v_fed), v_wall);
   } else {
     neighbours_ = NeighbourList(settings_.skin_fraction * rmax, kernel_->history_size());
     particles_.set_wall_history_stride(wall_history_stride());
-    rebuild_neighbours();
+    if (shared()) distribute();
+    else rebuild_neighbours();
     reset_forces();
     compute_forces();
     // Floor: every particle moving at the design speed of the time step (initial overlaps may
     // release elastic energy the guard cannot book), plus what moving walls feed.
-    guard_.start(particles_.kinetic_energy(), 0.5 * mass * (v_design * v_design + v_fed * v_fed),
-                 v_wall);
+    guard_.start(kinetic_energy(), 0.5 * mass * (v_design * v_design + v_fed * v_fed), v_wall);
   }
   plan_ = make_plan();
+  if (shared()) {
+    const double mine = static_cast<double>(owned_count());
+    plan_ += format("  ranks: %d, each owning the particles of its sub-box (recursive coordinate "
+                    "bisection by particle count, cut again above %.3g x the mean) and ghost "
+                    "copies of its neighbours' within %.4g m; particles per rank %.0f-%.0f\n",
+                    settings_.ranks.size(), settings_.rebalance_above,
+                    2.0 * rmax + neighbours_.skin(), -settings_.ranks.max(-mine),
+                    settings_.ranks.max(mine));
+  }
   out << plan_;
   if (!time_step_.warning.empty()) out << time_step_.warning << '\n';
   prepared_ = true;
@@ -263,8 +311,10 @@ void DemEngine::prepare(std::ostream& out) {
 std::string DemEngine::make_plan() const {
   std::ostringstream s;
   s << "DEM plan\n";
-  s << format("  particles: %zu, largest radius %.4g m, total mass %.6g kg\n", particles_.size(),
-              particles_.max_radius(), particles_.total_mass());
+  double own_mass = 0.0;
+  for (std::size_t k = 0; k < owned_count(); ++k) own_mass += particles_.mass[k];
+  s << format("  particles: %zu, largest radius %.4g m, total mass %.6g kg\n", global_count(),
+              settings_.ranks.max(particles_.max_radius()), settings_.ranks.sum(own_mass));
   std::string axes;
   for (int a = 0; a < 3; ++a)
     if (box_.periodic[a]) axes += "xyz"[a];
@@ -299,7 +349,61 @@ std::string DemEngine::make_plan() const {
   return s.str();
 }
 
+void DemEngine::distribute() {
+  // Every rank holds every particle: each keeps a share (every size-th slot), the domains are
+  // cut by those shares' counts, and the particles go to their owners.
+  const DemRanks& ranks = settings_.ranks;
+  std::vector<char> others(particles_.size(), 0);
+  for (std::size_t k = 0; k < others.size(); ++k)
+    others[k] = static_cast<int>(k % static_cast<std::size_t>(ranks.size())) != ranks.rank();
+  particles_.remove_flagged(others);
+  domains_ = RankDomains::bisect(particles_.position, particles_.size(), box_, ranks);
+  rebuild_shared(false);
+}
+
+void DemEngine::rebuild_shared(bool sink_due) {
+  const DemRanks& ranks = settings_.ranks;
+  halo_.drop_ghosts(particles_);
+  if (sink_due && sink_) sink_->remove(particles_, time_);
+  const double mine = static_cast<double>(particles_.size());
+  const double most = ranks.max(mine), all = ranks.sum(mine);
+  if (most > settings_.rebalance_above * all / ranks.size()) {
+    domains_ = RankDomains::bisect(particles_.position, particles_.size(), box_, ranks);
+    ++rebalances_;
+  }
+  halo_.migrate(particles_, neighbours_, domains_, ranks);
+  const double rmax = ranks.max(particles_.max_radius());
+  if (settings_.sort_every > 0 && neighbours_.rebuild_count() % settings_.sort_every == 0)
+    particles_.permute(morton_order(particles_.position, box_, 2.0 * rmax + neighbours_.skin()));
+  halo_.build_ghosts(particles_, domains_, 2.0 * rmax + neighbours_.skin(), ranks);
+  neighbours_.rebuild(particles_, box_, halo_.owned());
+  wall_reach_.update(particles_, walls_, meshes_, neighbours_.skin());
+}
+
+template <class Check>
+void DemEngine::guarded(Check&& check) const {
+  if (!shared()) {
+    check();
+    return;
+  }
+  std::optional<std::string> failure;
+  try {
+    check();
+  } catch (const NumericalFailure& e) {
+    failure = e.what();
+  }
+  if (auto agreed = settings_.ranks.agree_on_failure(failure)) throw NumericalFailure(*agreed);
+}
+
+std::size_t DemEngine::global_count() const {
+  return static_cast<std::size_t>(settings_.ranks.sum(static_cast<double>(owned_count())));
+}
+
 void DemEngine::rebuild_neighbours() {
+  if (shared()) {
+    rebuild_shared(false);
+    return;
+  }
   if (settings_.sort_every > 0 && neighbours_.rebuild_count() % settings_.sort_every == 0) {
     const double cell = 2.0 * particles_.max_radius() + neighbours_.skin();
     particles_.permute(morton_order(particles_.position, box_, cell));
@@ -309,7 +413,7 @@ void DemEngine::rebuild_neighbours() {
 }
 
 void DemEngine::reset_forces() {
-  for (std::size_t i = 0; i < particles_.size(); ++i) {
+  for (std::size_t i = 0; i < owned_count(); ++i) {
     particles_.force[i] = particles_.mass[i] * settings_.gravity;
     particles_.torque[i].setZero();
   }
@@ -320,6 +424,7 @@ void DemEngine::compute_forces() {
   ForceContext c{particles_, neighbours_, box_,   walls_, meshes_,
                  time_,      time_step_.value, n >= settings_.parallel_from};
   if (wall_reach_.size() == n) c.wall_reach = wall_reach_.data();
+  c.owned = owned_count();
   DeepestOverlap pairs, walls;
   // One parallel region for the pair and wall loops; the walls phase is the time one thread
   // spent on its share of the wall contacts, the pairs phase the rest.
@@ -330,8 +435,14 @@ void DemEngine::compute_forces() {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report_.add_phase_time("pairs", seconds - wall_seconds);
   report_.add_phase_time("walls", wall_seconds);
-  guard_.check_overlap(pairs.ratio >= walls.ratio ? pairs : walls, particles_, step_);
-  check_current_springs(pairs, walls);
+  if (shared()) {
+    auto scope = report_.time("exchange");
+    halo_.reverse(particles_, settings_.ranks);
+  }
+  guarded([&] {
+    guard_.check_overlap(pairs.ratio >= walls.ratio ? pairs : walls, particles_, step_);
+    check_current_springs(pairs, walls);
+  });
 }
 
 void DemEngine::check_current_springs(const DeepestOverlap& pairs, const DeepestOverlap& walls) {
@@ -359,7 +470,7 @@ void DemEngine::check_current_springs(const DeepestOverlap& pairs, const Deepest
 
 void DemEngine::one_step(bool last) {
   const double dt = time_step_.value;
-  const std::size_t n = particles_.size();
+  const std::size_t n = owned_count();
   ParticleStore& p = particles_;
   const Vec3 g = settings_.gravity;
   // The second half kick of the step before (when it was left pending) and the first half
@@ -371,7 +482,7 @@ void DemEngine::one_step(bool last) {
   {
     auto scope = report_.time("integration");
     const std::vector<Vec3>& reference = neighbours_.reference_positions();
-    const bool same_slots = reference.size() == n;
+    const bool same_slots = reference.size() == p.size();
 #pragma omp parallel for schedule(static) reduction(max : moved2) \
     reduction(+ : kinetic, gravity_work) if (n >= settings_.parallel_from)
     for (std::size_t i = 0; i < n; ++i) {
@@ -393,29 +504,54 @@ void DemEngine::one_step(bool last) {
     for (auto& w : walls_) w.advance(dt);
     for (auto& m : meshes_) m.advance(dt);
   }
+  // A shared run sums what the guard and the rebuild need over the ranks: kinetic energy,
+  // gravity work, the particles the sink captures, the count and the largest displacement.
+  double captured = 0.0, count = static_cast<double>(n);
+  if (shared()) {
+    auto scope = report_.time("exchange");
+    if (sink_)
+      for (std::size_t i = 0; i < n; ++i) captured += sink_->captures(p.position[i]) ? 1.0 : 0.0;
+    std::vector<double> sums{kinetic, gravity_work, captured, count};
+    settings_.ranks.sum(sums);
+    kinetic = sums[0];
+    gravity_work = sums[1];
+    captured = sums[2];
+    count = sums[3] - sums[2];
+    moved2 = settings_.ranks.max(moved2);
+  }
   if (finish_before) {
     kick_pending_ = false;
     guard_.add_gravity_work(gravity_work);
-    guard_.check_state(particles_, kinetic, step_);
+    guarded([&] { guard_.check_state(particles_, kinetic, step_); });
   }
   time_ += dt;
   ++step_;
-  {
+  const double half_skin = 0.5 * neighbours_.skin();
+  if (shared()) {
+    const bool rebuild = captured > 0.0 || rebuild_due_ || moved2 > half_skin * half_skin;
+    if (rebuild) {
+      auto scope = report_.time("neighbours");
+      rebuild_shared(captured > 0.0);
+    } else {
+      auto scope = report_.time("exchange");
+      halo_.forward(particles_, settings_.ranks);
+    }
+  } else {
     auto scope = report_.time("neighbours");
     const bool removed = sink_ && sink_->remove(particles_, time_) > 0;
-    const double half_skin = 0.5 * neighbours_.skin();
     if (removed || rebuild_due_ || moved2 > half_skin * half_skin) rebuild_neighbours();
-    rebuild_due_ = false;
+    count = static_cast<double>(particles_.size());
   }
+  rebuild_due_ = false;
   compute_forces();
-  particle_steps_ += static_cast<double>(particles_.size());
+  particle_steps_ += count;
   if (last) finish_kick();
   else kick_pending_ = true;
 }
 
 void DemEngine::finish_kick() {
   const double dt = time_step_.value;
-  const std::size_t m = particles_.size();
+  const std::size_t m = owned_count();
   ParticleStore& p = particles_;
   double kinetic = 0.0, gravity_work = 0.0;
   {
@@ -431,9 +567,15 @@ void DemEngine::finish_kick() {
                  0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
     }
   }
+  if (shared()) {
+    std::vector<double> sums{kinetic, gravity_work};
+    settings_.ranks.sum(sums);
+    kinetic = sums[0];
+    gravity_work = sums[1];
+  }
   kick_pending_ = false;
   guard_.add_gravity_work(gravity_work);
-  guard_.check_state(particles_, kinetic, step_);
+  guarded([&] { guard_.check_state(particles_, kinetic, step_); });
 }
 
 void DemEngine::run_steps(long steps) {
@@ -503,12 +645,20 @@ class ParticleSnapshotWriter final : public SnapshotWriter {
 
 std::unique_ptr<SnapshotWriter> DemEngine::snapshot_writer(const std::filesystem::path& folder,
                                                            bool continuing) const {
+  if (shared())
+    throw std::runtime_error("particle snapshots of a DEM run shared among ranks are not "
+                             "written yet: run on one rank for snapshots");
   const std::string name =
       continuing ? "particles_from_step_" + std::to_string(step_) + ".h5" : "particles.h5";
   return std::make_unique<ParticleSnapshotWriter>(*this, folder / name);
 }
 
-void DemEngine::write_checkpoint(Hdf5File& file) const { write_dem_checkpoint(file, checkpoint()); }
+void DemEngine::write_checkpoint(Hdf5File& file) const {
+  if (shared())
+    throw std::runtime_error("a scene's checkpoint of a DEM run shared among ranks is not "
+                             "written yet: run the scene on one rank");
+  write_dem_checkpoint(file, checkpoint());
+}
 
 void DemEngine::restore(const Hdf5File& file) {
   std::vector<MeshWall> meshes = std::move(meshes_);
@@ -520,11 +670,36 @@ void DemEngine::restore(const Hdf5File& file) {
 
 double DemEngine::max_speed() const {
   double v2 = 0.0;
-  for (const auto& v : particles_.velocity) v2 = std::max(v2, v.squaredNorm());
-  return std::sqrt(v2);
+  for (std::size_t k = 0; k < owned_count(); ++k)
+    v2 = std::max(v2, particles_.velocity[k].squaredNorm());
+  return std::sqrt(settings_.ranks.max(v2));
+}
+
+double DemEngine::kinetic_energy() const {
+  return settings_.ranks.sum(kinetic_energy_of(particles_, owned_count()));
 }
 
 std::string DemEngine::performance_report() const { return performance().render(); }
+
+std::string DemEngine::rank_balance() const {
+  if (!shared()) return {};
+  const DemRanks& ranks = settings_.ranks;
+  auto spread = [&](double mine) {
+    return std::array<double, 3>{-ranks.max(-mine), ranks.sum(mine) / ranks.size(), ranks.max(mine)};
+  };
+  std::string out = format("  per rank (min / mean / max over %d ranks):\n", ranks.size());
+  const auto own = spread(static_cast<double>(owned_count()));
+  out += format("    %-12s %10.0f %10.0f %10.0f\n", "particles", own[0], own[1], own[2]);
+  const auto ghosts = spread(static_cast<double>(halo_.ghosts()));
+  out += format("    %-12s %10.0f %10.0f %10.0f\n", "ghosts", ghosts[0], ghosts[1], ghosts[2]);
+  // The same phases on every rank, in the order of this rank's report (every rank times the
+  // same phases, as they run the same steps).
+  for (const char* phase : {"pairs", "walls", "integration", "neighbours", "exchange"}) {
+    const auto t = spread(report_.phase_seconds(phase));
+    out += format("    %-12s %9.3f s %9.3f s %9.3f s\n", phase, t[0], t[1], t[2]);
+  }
+  return out;
+}
 
 RunReport DemEngine::performance() const {
   RunReport r = report_;
@@ -535,13 +710,22 @@ RunReport DemEngine::performance() const {
       run_seconds_ > 0.0 ? (particle_steps_ - particle_steps_before_) / run_seconds_ : 0.0;
   r.add_figure("throughput", format("%.3g particle-steps/s", rate));
   r.add_figure("steps", format("%ld (dt %.4g s, t = %.4g s)", step_, time_step_.value, time_));
-  r.add_figure("particles", format("%zu", particles_.size()));
+  r.add_figure("particles", format("%zu", owned_count()));
   r.add_figure("neighbour pairs", format("%.2f per particle, %zu rebuilds",
                                          particles_.size() ? static_cast<double>(neighbours_.pair_count()) /
                                                                  static_cast<double>(particles_.size())
                                                            : 0.0,
                                          neighbours_.rebuild_count()));
   r.add_figure("threads", format("%d", thread_count()));
+  if (shared()) {
+    r.add_figure("ranks", format("%d (this one: %zu own particles, %zu ghosts from %zu "
+                                 "neighbours; %zu re-cuts)",
+                                 settings_.ranks.size(), halo_.owned(), halo_.ghosts(),
+                                 halo_.neighbour_ranks().size(), rebalances_));
+    r.add_figure("sent per step", format("%.3g doubles (+ %.3g per step at rebuilds)",
+                                         step_ > 0 ? halo_.step_doubles() / step_ : 0.0,
+                                         step_ > 0 ? halo_.rebuild_doubles() / step_ : 0.0));
+  }
   return r;
 }
 

@@ -29,6 +29,9 @@
 #include "fullsim/dem/neighbour_list.hpp"
 #include "fullsim/dem/outlet_sink.hpp"
 #include "fullsim/dem/particle_store.hpp"
+#include "fullsim/dem/ranks/dem_ranks.hpp"
+#include "fullsim/dem/ranks/halo_exchange.hpp"
+#include "fullsim/dem/ranks/rank_domains.hpp"
 #include "fullsim/dem/simulation_box.hpp"
 #include "fullsim/dem/time_step_choice.hpp"
 #include "fullsim/dem/wall.hpp"
@@ -52,6 +55,13 @@ struct DemSettings {
   BlowUpLimits guard;
   std::size_t parallel_from = 4000;          // fewer particles run on one thread (the
                                              // thread start-up would cost more than it saves)
+  // The ranks the run is shared among (ranks/): each owns the particles of its sub-box and
+  // holds ghost copies of its neighbours' near ones. Every rank constructs the engine with the
+  // same particles and walls; prepare() keeps each rank's own. One rank: no MPI at all.
+  DemRanks ranks = DemRanks::one();
+  // The sub-boxes are cut again at a rebuild when the most particles a rank owns pass this
+  // factor on the mean (a draining hopper, a turning drum).
+  double rebalance_above = 1.10;
 };
 
 class DemEngine final : public Stepper {
@@ -112,6 +122,9 @@ class DemEngine final : public Stepper {
   RunReport performance() const override;
 
   std::string plan() const { return plan_; }
+  // On a shared run, each phase's time over the ranks (min / mean / max) and the particles per
+  // rank: the lines of the performance block that show the balance (collective; empty alone).
+  std::string rank_balance() const;
   std::string performance_report() const;
 
   double time() const override { return time_; }
@@ -121,6 +134,13 @@ class DemEngine final : public Stepper {
   const ContactLawChoice& effective_law() const { return effective_law_; }
   ParticleStore& particles() { return particles_; }
   const ParticleStore& particles() const { return particles_; }
+  // On a run shared among ranks: this rank's own particles are the store's first
+  // owned_count() slots, the ghost copies of other ranks' particles follow; alone, all.
+  std::size_t owned_count() const { return shared() ? halo_.owned() : particles_.size(); }
+  // The particles of every rank (collective on a shared run).
+  std::size_t global_count() const;
+  const RankDomains& rank_domains() const { return domains_; }
+  const HaloExchange& halo() const { return halo_; }
   const NeighbourList& neighbours() const { return neighbours_; }
   const WallReach& wall_reach() const { return wall_reach_; }
   const std::vector<Wall>& walls() const { return walls_; }
@@ -132,7 +152,8 @@ class DemEngine final : public Stepper {
   const OutletSink* outlet_sink() const { return sink_ ? &*sink_ : nullptr; }
   const SimulationBox& box() const { return box_; }
   const RunReport& report() const { return report_; }
-  double kinetic_energy() const { return particles_.kinetic_energy(); }
+  // Of every rank's own particles (collective on a shared run).
+  double kinetic_energy() const;
   double max_speed() const;
   // The warning raised (once) when a contact grew stiffer than the time step allows with its
   // safety factor; empty if none. The engine prints nothing: the scene reports it.
@@ -142,7 +163,15 @@ class DemEngine final : public Stepper {
 
  private:
   long steps_to(double t) const;  // whole steps until t is reached (stepper.hpp)
+  bool shared() const { return settings_.ranks.shared(); }
   void rebuild_neighbours();
+  // A shared run's rebuild: the captured particles removed, the sub-boxes re-cut when out of
+  // balance, particles moved to their owners, re-sorted, their ghosts copied.
+  void rebuild_shared(bool sink_due);
+  void distribute();  // prepare() on a shared run: each rank keeps its own particles
+  // Runs a guard check; on a shared run a failure on any rank stops every rank with its message.
+  template <class Check>
+  void guarded(Check&& check) const;
   void reset_forces();    // to the weight, no torque
   void compute_forces();  // adds the contact forces
   // The time step against the springs of the deepest current contacts (issue 5: the step
@@ -186,6 +215,9 @@ class DemEngine final : public Stepper {
   double run_seconds_ = 0.0;
   double checked_ratio_ = 0.0;  // overlap / radius whose springs were checked last
   std::string spring_warning_;
+  RankDomains domains_;
+  HaloExchange halo_;
+  std::size_t rebalances_ = 0;
 };
 
 }  // namespace feedflow

@@ -30,6 +30,9 @@ struct ForceContext {
   int max_lane_bits = 512;  // widest vector lanes of the pair loop to use, where available
   // Per particle slot, the walls it can touch (wall_reach.hpp); null: every wall is tested.
   const std::uint64_t* wall_reach = nullptr;
+  // The slots of this rank's own particles (the ghosts behind them touch no wall here: their
+  // own rank adds their wall forces).
+  std::size_t owned = static_cast<std::size_t>(-1);
 };
 
 // The widest vector lanes of the pair loop this processor runs: 512 (AVX-512 F, VL, DQ), 256

@@ -194,7 +194,7 @@ class LawForces final : public ForceKernel {
           }
       if (walls) {
         const auto start = std::chrono::steady_clock::now();
-        own_[tid].wall_worst = walls_.rows(c, begin, end);
+        own_[tid].wall_worst = walls_.rows(c, std::min(begin, c.owned), std::min(end, c.owned));
         if (tid == 0)
           wall_seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -43,8 +43,14 @@ struct CellGrid {
 
 }  // namespace
 
-void NeighbourList::rebuild(ParticleStore& particles, const SimulationBox& box) {
+void NeighbourList::import_history(std::uint64_t key, const double* h) {
+  entry_key_.push_back(key);
+  history.insert(history.end(), h, h + history_size_);
+}
+
+void NeighbourList::rebuild(ParticleStore& particles, const SimulationBox& box, std::size_t owned) {
   const std::size_t n = particles.size();
+  const std::size_t rows = std::min(owned, n);
   if (box.any_periodic())
     for (auto& x : particles.position) x = box.wrap(x);
 
@@ -81,7 +87,7 @@ void NeighbourList::rebuild(ParticleStore& particles, const SimulationBox& box) 
   new_key.reserve(n * 8);
   first.assign(n + 1, 0);
   std::vector<std::size_t> stencil;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < rows; ++i) {
     first[i] = static_cast<std::uint32_t>(new_partner.size());
     const Vec3& xi = particles.position[i];
     const std::uint32_t idi = particles.id[i];
@@ -113,7 +119,7 @@ void NeighbourList::rebuild(ParticleStore& particles, const SimulationBox& box) 
         }
       }
   }
-  first[n] = static_cast<std::uint32_t>(new_partner.size());
+  for (std::size_t i = rows; i <= n; ++i) first[i] = static_cast<std::uint32_t>(new_partner.size());
 
   std::vector<double> new_history(new_partner.size() * history_size_, 0.0);
   carried_ = 0;

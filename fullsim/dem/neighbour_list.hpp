@@ -23,7 +23,14 @@ class NeighbourList {
 
   // Rebuilds from the current positions (wrapped into the box along periodic axes first) and
   // carries the history of surviving pairs over. Remembers the positions for needs_rebuild().
-  void rebuild(ParticleStore& particles, const SimulationBox& box);
+  // On a rank that holds ghost copies behind its `owned` particles, a pair is listed only
+  // when the particle with the smaller id is its own (the ghost's rank lists the others); the
+  // rows of the ghosts stay empty.
+  void rebuild(ParticleStore& particles, const SimulationBox& box,
+               std::size_t owned = static_cast<std::size_t>(-1));
+  // The history of a contact brought by a particle from another rank, carried over by the
+  // next rebuild as if it had been listed here.
+  void import_history(std::uint64_t key, const double* h);
   // True when a particle moved more than skin/2 since the last rebuild (or the particle count
   // changed).
   bool needs_rebuild(const ParticleStore& particles) const;

@@ -88,6 +88,20 @@ void ParticleStore::remove_flagged(const std::vector<char>& flagged) {
   compact_field(id, flagged);
 }
 
+void ParticleStore::resize(std::size_t n) {
+  position.resize(n, Vec3::Zero());
+  velocity.resize(n, Vec3::Zero());
+  angular_velocity.resize(n, Vec3::Zero());
+  force.resize(n, Vec3::Zero());
+  torque.resize(n, Vec3::Zero());
+  radius.resize(n, 0.0);
+  mass.resize(n, 0.0);
+  inertia.resize(n, 0.0);
+  layer.resize(n, 0.0);
+  id.resize(n, 0);
+  wall_history.resize(n * wall_stride_, 0.0);
+}
+
 double ParticleStore::total_mass() const {
   double m = 0.0;
   for (double mi : mass) m += mi;

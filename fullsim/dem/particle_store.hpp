@@ -47,6 +47,9 @@ class ParticleStore {
   void permute(const std::vector<std::size_t>& order);
   // Removes the particles whose flag is set, keeping the order of the others.
   void remove_flagged(const std::vector<char>& flagged);
+  // Keeps the first n slots, or adds zeroed ones up to n (a rank's ghost copies are added and
+  // dropped this way behind its own particles).
+  void resize(std::size_t n);
 
   double total_mass() const;
   double kinetic_energy() const;  // translation and rotation [J]
