@@ -504,20 +504,23 @@ void DemEngine::one_step(bool last) {
     for (auto& w : walls_) w.advance(dt);
     for (auto& m : meshes_) m.advance(dt);
   }
-  // A shared run sums what the guard and the rebuild need over the ranks: kinetic energy,
-  // gravity work, the particles the sink captures, the count and the largest displacement.
-  double captured = 0.0, count = static_cast<double>(n);
+  // A shared run sums what the guard and the rebuild need over the ranks in one reduction:
+  // kinetic energy, gravity work, the particles the sink captures, the count and the ranks
+  // with a particle moved past half the skin.
+  const double half_skin = 0.5 * neighbours_.skin();
+  double captured = 0.0, count = static_cast<double>(n), moved_far = 0.0;
   if (shared()) {
     auto scope = report_.time("exchange");
     if (sink_)
       for (std::size_t i = 0; i < n; ++i) captured += sink_->captures(p.position[i]) ? 1.0 : 0.0;
-    std::vector<double> sums{kinetic, gravity_work, captured, count};
+    std::vector<double> sums{kinetic, gravity_work, captured, count,
+                             moved2 > half_skin * half_skin ? 1.0 : 0.0};
     settings_.ranks.sum(sums);
     kinetic = sums[0];
     gravity_work = sums[1];
     captured = sums[2];
     count = sums[3] - sums[2];
-    moved2 = settings_.ranks.max(moved2);
+    moved_far = sums[4];
   }
   if (finish_before) {
     kick_pending_ = false;
@@ -526,9 +529,8 @@ void DemEngine::one_step(bool last) {
   }
   time_ += dt;
   ++step_;
-  const double half_skin = 0.5 * neighbours_.skin();
   if (shared()) {
-    const bool rebuild = captured > 0.0 || rebuild_due_ || moved2 > half_skin * half_skin;
+    const bool rebuild = captured > 0.0 || rebuild_due_ || moved_far > 0.0;
     if (rebuild) {
       auto scope = report_.time("neighbours");
       rebuild_shared(captured > 0.0);
