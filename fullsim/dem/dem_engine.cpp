@@ -17,6 +17,7 @@
 #include "fullsim/dem/morton_order.hpp"
 #include "fullsim/dem/particle_snapshots.hpp"
 #include "fullsim/dem/ranks/gathered_checkpoint.hpp"
+#include "fullsim/dem/ranks/gathered_particles.hpp"
 #include "models/core/errors.hpp"
 
 // force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
@@ -186,9 +187,23 @@ void DemEngine::set_outlet_sink(OutletSink sink) { sink_ = std::move(sink); }
 
 std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double density,
                                          double layer, const Vec3& velocity) {
-  if (prepared_ && shared())
-    throw std::logic_error("DemEngine: inserting particles into a run shared among ranks is not "
-                           "done yet: fill before prepare()");
+  if (prepared_ && shared()) {
+    // Every rank inserts the same particle, so the ids stay alike; the owner of its position
+    // keeps it behind its own particles (the ghosts dropped until the next step's rebuild),
+    // and every rank books its energy, as every rank holds the whole run's energy book.
+    halo_.drop_ghosts(particles_);
+    const std::uint32_t id = particles_.next_id();
+    if (domains_.owner(x) == settings_.ranks.rank()) {
+      particles_.add(x, radius, density, layer, velocity);
+      particles_.force.back() = particles_.mass.back() * settings_.gravity;
+    } else {
+      particles_.set_next_id(id + 1);
+    }
+    halo_.own_all(particles_);
+    guard_.add_inserted_energy(0.5 * ParticleStore::sphere_mass(density, radius) * velocity.squaredNorm());
+    rebuild_due_ = true;
+    return id;
+  }
   const std::uint32_t id = particles_.add(x, radius, density, layer, velocity);
   if (prepared_) {
     const std::size_t k = particles_.size() - 1;
@@ -200,11 +215,18 @@ std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double de
 }
 
 void DemEngine::remove_particles(const std::vector<char>& flagged) {
-  if (prepared_ && shared())
-    throw std::logic_error("DemEngine: removing particles from a run shared among ranks is not "
-                           "done yet");
   if (flagged.size() != particles_.size())
     throw std::invalid_argument("DemEngine::remove_particles: one flag per particle expected");
+  if (prepared_ && shared()) {
+    // Each rank removes its own flagged particles; a ghost's flag is its owner's to set.
+    std::vector<char> own(flagged.begin(),
+                          flagged.begin() + static_cast<std::ptrdiff_t>(owned_count()));
+    halo_.drop_ghosts(particles_);
+    particles_.remove_flagged(own);
+    halo_.own_all(particles_);
+    rebuild_due_ = true;
+    return;
+  }
   particles_.remove_flagged(flagged);
   rebuild_due_ = prepared_;
 }
@@ -506,7 +528,7 @@ void DemEngine::one_step(bool last) {
   }
   // A shared run sums what the guard and the rebuild need over the ranks in one reduction:
   // kinetic energy, gravity work, the particles the sink captures, the count and the ranks
-  // with a particle moved past half the skin.
+  // with a particle moved past half the skin or particles inserted or removed.
   const double half_skin = 0.5 * neighbours_.skin();
   double captured = 0.0, count = static_cast<double>(n), moved_far = 0.0;
   if (shared()) {
@@ -514,7 +536,7 @@ void DemEngine::one_step(bool last) {
     if (sink_)
       for (std::size_t i = 0; i < n; ++i) captured += sink_->captures(p.position[i]) ? 1.0 : 0.0;
     std::vector<double> sums{kinetic, gravity_work, captured, count,
-                             moved2 > half_skin * half_skin ? 1.0 : 0.0};
+                             moved2 > half_skin * half_skin || rebuild_due_ ? 1.0 : 0.0};
     settings_.ranks.sum(sums);
     kinetic = sums[0];
     gravity_work = sums[1];
@@ -530,7 +552,7 @@ void DemEngine::one_step(bool last) {
   time_ += dt;
   ++step_;
   if (shared()) {
-    const bool rebuild = captured > 0.0 || rebuild_due_ || moved_far > 0.0;
+    const bool rebuild = captured > 0.0 || moved_far > 0.0;
     if (rebuild) {
       auto scope = report_.time("neighbours");
       rebuild_shared(captured > 0.0);
@@ -621,17 +643,31 @@ double DemEngine::whole_steps(double duration, StepRounding rounding) const {
 
 namespace {
 
-// The particle snapshots of an engine (DemEngine::snapshot_writer).
+// The particle snapshots of an engine (DemEngine::snapshot_writer). A run shared among ranks
+// gathers its particles to the first rank, which writes them; a failure there stops every rank.
 class ParticleSnapshotWriter final : public SnapshotWriter {
  public:
-  ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file)
-      : engine_(engine), snapshots_(std::move(file), 1) {}
+  ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file, const DemRanks& ranks)
+      : engine_(engine), ranks_(ranks), snapshots_(std::move(file), 1) {}
   void write() override {
-    if (engine_.step() != last_step_)
-      snapshots_.write(engine_.particles(), engine_.time(), engine_.step(), &engine_.outline());
+    if (engine_.step() == last_step_) return;
     last_step_ = engine_.step();
+    ++count_;
+    if (ranks_.size() == 1) {
+      snapshots_.write(engine_.particles(), engine_.time(), engine_.step(), &engine_.outline());
+      return;
+    }
+    const ParticleStore all =
+        gather_particles(engine_.particles(), engine_.owned_count(), ranks_);
+    std::optional<std::string> failure;
+    if (ranks_.rank() == 0) try {
+        snapshots_.write(all, engine_.time(), engine_.step(), &engine_.outline());
+      } catch (const std::runtime_error& e) {
+        failure = e.what();
+      }
+    if (auto agreed = ranks_.agree_on_failure(failure)) throw std::runtime_error(*agreed);
   }
-  std::size_t count() const override { return snapshots_.count(); }
+  std::size_t count() const override { return count_; }
   std::vector<std::filesystem::path> files() const override {
     if (count() == 0) return {};
     return {snapshots_.hdf5_path(), snapshots_.xdmf_path()};
@@ -639,20 +675,19 @@ class ParticleSnapshotWriter final : public SnapshotWriter {
 
  private:
   const DemEngine& engine_;
+  DemRanks ranks_;
   ParticleSnapshots snapshots_;
   long last_step_ = -1;
+  std::size_t count_ = 0;
 };
 
 }  // namespace
 
 std::unique_ptr<SnapshotWriter> DemEngine::snapshot_writer(const std::filesystem::path& folder,
                                                            bool continuing) const {
-  if (shared())
-    throw std::runtime_error("particle snapshots of a DEM run shared among ranks are not "
-                             "written yet: run on one rank for snapshots");
   const std::string name =
       continuing ? "particles_from_step_" + std::to_string(step_) + ".h5" : "particles.h5";
-  return std::make_unique<ParticleSnapshotWriter>(*this, folder / name);
+  return std::make_unique<ParticleSnapshotWriter>(*this, folder / name, settings_.ranks);
 }
 
 void DemEngine::write_checkpoint(Hdf5File& file) const {

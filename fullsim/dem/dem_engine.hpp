@@ -85,7 +85,8 @@ class DemEngine final : public Stepper {
   // Filling and trimming between steps (rain-fall insertion, fullsim/dem/scene/): a particle
   // added to a prepared run has its kinetic energy booked with the blow-up guard; after either
   // call the neighbour list is rebuilt at the next step. Before prepare() they only edit the
-  // store.
+  // store. On a run shared among ranks every rank inserts the same particles (the owner of the
+  // position keeps each) and flags the slots of its own store (a ghost's flag is ignored).
   std::uint32_t insert_particle(const Vec3& x, double radius, double density, double layer,
                                 const Vec3& velocity);
   // Removes the particles whose flag (one per slot) is set.

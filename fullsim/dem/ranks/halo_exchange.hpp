@@ -31,6 +31,12 @@ class HaloExchange {
   // Keeps the own particles only (before a rebuild, a removal or a checkpoint); a store
   // without ghosts is all own.
   void drop_ghosts(ParticleStore& p);
+  // After particles were added to or removed from the own ones (ghosts dropped first): every
+  // slot of the store is this rank's own until the next rebuild.
+  void own_all(const ParticleStore& p) {
+    owned_ = p.size();
+    ghosts_ = 0;
+  }
   // Sends away the own particles outside this rank's domain, adds those that arrive (after the
   // own ones), and hands the contact history they bring to `list` (collective). Returns how
   // many left.

@@ -1,55 +1,19 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
 #include "fullsim/dem/dem_checkpoint.hpp"
-#include "tests/fullsim/dem/dem_test_scene.hpp"
+#include "fullsim/dem/particle_snapshots.hpp"
+#include "tests/fullsim_ranks/ranks_test_bed.hpp"
 
 namespace feedflow {
 namespace {
 
-using namespace dem_test;
+using namespace ranks_test;
 namespace fs = std::filesystem;
-
-// The bed of dem_on_ranks_test.cpp, smaller: 1 350 spheres dropped on a floor in a periodic
-// box under tilted gravity, so grains slide across the cut and contacts carry history.
-DemEngine dropped_bed(const DemRanks& ranks) {
-  DemSettings s = hertz_settings(0.3, 0.5, 0.1);
-  s.ranks = ranks;
-  s.gravity = Vec3(4.0, 0.0, -9.81);
-  ParticleStore p;
-  add_lattice(p, Vec3(0.0016, 0.0016, 0.0016), 15, 15, 6, 0.0032, 0.05);
-  const SimulationBox box{Vec3::Zero(), Vec3(15 * 0.0032, 15 * 0.0032, 0.03), {true, true, false}};
-  DemEngine e(s, box, p);
-  e.add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
-  return e;
-}
-
-// Every rank's own particles' positions by id.
-std::vector<Vec3> positions_by_id(const DemEngine& e, std::size_t n, const DemRanks& ranks) {
-  std::vector<double> mine;
-  const ParticleStore& p = e.particles();
-  for (std::size_t k = 0; k < e.owned_count(); ++k)
-    mine.insert(mine.end(), {static_cast<double>(p.id[k]), p.position[k].x(), p.position[k].y(),
-                             p.position[k].z()});
-  std::vector<Vec3> x(n, Vec3::Constant(std::nan("")));
-  for (const auto& from : ranks.all_gather(mine))
-    for (std::size_t k = 0; k < from.size(); k += 4)
-      x[static_cast<std::size_t>(from[k])] = Vec3(from[k + 1], from[k + 2], from[k + 3]);
-  return x;
-}
-
-// Across the periodic faces, the nearest image (a run wraps positions at its list rebuilds, and
-// a restarted one rebuilds at the restart).
-double largest_difference(const std::vector<Vec3>& a, const std::vector<Vec3>& b,
-                          const SimulationBox& box) {
-  double worst = 0.0;
-  for (std::size_t k = 0; k < a.size(); ++k)
-    worst = std::max(worst, box.minimum_image(a[k] - b[k]).norm());
-  return std::isnan(worst) ? 1.0 : worst;
-}
 
 // A folder every rank names alike (the first rank's process id).
 fs::path shared_folder(const DemRanks& ranks) {
@@ -95,10 +59,7 @@ TEST(RestartAcrossRanks, CheckpointOfNRanksContinuesOnMRanks) {
   for (const Case& c : {Case{"ranks -> 1", "shared.h5", DemRanks::one()},
                         Case{"ranks -> ranks", "shared.h5", ranks},
                         Case{"1 -> ranks", "alone.h5", ranks}}) {
-    DemSettings s = hertz_settings(0.3, 0.5, 0.1);
-    s.ranks = c.on;
-    s.gravity = Vec3(4.0, 0.0, -9.81);
-    DemEngine restarted(s, read_dem_checkpoint(folder / c.file));
+    DemEngine restarted(dropped_bed_settings(c.on), read_dem_checkpoint(folder / c.file));
     restarted.prepare(plan);
     EXPECT_EQ(restarted.global_count(), n) << c.name;
     EXPECT_EQ(restarted.step(), before) << c.name;
@@ -113,6 +74,55 @@ TEST(RestartAcrossRanks, CheckpointOfNRanksContinuesOnMRanks) {
     EXPECT_LT(worst, 1e-12) << c.name;
     EXPECT_NEAR(e, energy, 1e-9 * energy) << c.name;
   }
+  ranks.sum(0.0);
+  if (ranks.rank() == 0) fs::remove_all(folder);
+}
+
+// A snapshot of a run shared among ranks holds every particle once, as one rank's run has it
+// (positions and velocities by id to round-off); every rank counts it; a snapshot the first
+// rank cannot write stops every rank with its reason, none left waiting.
+TEST(SnapshotOnRanks, FirstRankWritesEveryParticle) {
+  const DemRanks ranks = DemRanks::world();
+  const fs::path folder = shared_folder(ranks);
+  std::ostringstream plan;
+  DemEngine shared = dropped_bed(ranks), alone = dropped_bed(DemRanks::one());
+  shared.prepare(plan);
+  alone.prepare(plan);
+  shared.run_steps(700);
+  alone.run_steps(700);
+  auto writer = shared.snapshot_writer(folder, false);
+  writer->write();
+  writer->write();  // the same step: not again
+  EXPECT_EQ(writer->count(), 1u);
+  ranks.sum(0.0);
+  const std::size_t n = alone.particles().size();
+  if (ranks.rank() == 0) {
+    const ParticleSnapshot snap =
+        read_particle_snapshot(folder / "particles.h5", ParticleSnapshots::group_name(700));
+    ASSERT_EQ(snap.id.size(), n);
+    std::vector<int> seen(n, 0);
+    std::vector<Vec3> x(n), v(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      ASSERT_LT(snap.id[k], n);
+      ++seen[snap.id[k]];
+      x[snap.id[k]] = snap.position[k];
+      v[snap.id[k]] = snap.velocity[k];
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(n));  // each once
+    const ParticleStore& a = alone.particles();
+    double dx = 0.0, dv = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      dx = std::max(dx, alone.box().minimum_image(x[a.id[k]] - a.position[k]).norm());
+      dv = std::max(dv, (v[a.id[k]] - a.velocity[k]).norm());
+    }
+    std::printf("snapshot on %d ranks: %zu particles, largest position difference %.3g m, "
+                "velocity %.3g m/s\n", ranks.size(), n, dx, dv);
+    EXPECT_LT(dx, 1e-12);
+    EXPECT_LT(dv, 1e-9);
+    EXPECT_TRUE(fs::exists(folder / "particles.xdmf"));
+  }
+  auto nowhere = shared.snapshot_writer(folder / "particles.h5", false);  // a file, not a folder
+  EXPECT_THROW(nowhere->write(), std::runtime_error);
   ranks.sum(0.0);
   if (ranks.rank() == 0) fs::remove_all(folder);
 }
