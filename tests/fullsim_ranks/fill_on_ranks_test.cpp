@@ -34,10 +34,7 @@ void trim_above(DemEngine& e, double z) {
 // same kinetic energy; the guard's book takes the inserted energy on every rank, or it stops).
 TEST(FillOnRanks, InsertedAndTrimmedBedMatchesOneRank) {
   const DemRanks ranks = DemRanks::world();
-  std::ostringstream plan;
-  DemEngine shared = dropped_bed(ranks), alone = dropped_bed(DemRanks::one());
-  shared.prepare(plan);
-  alone.prepare(plan);
+  DemEngine shared = prepared_bed(ranks), alone = prepared_bed(DemRanks::one());
   for (DemEngine* e : {&shared, &alone}) {
     e->run_steps(300);
     rain_layer(*e, 0.0215, 100);  // lands on the bed

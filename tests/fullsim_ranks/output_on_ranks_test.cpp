@@ -32,10 +32,7 @@ fs::path shared_folder(const DemRanks& ranks) {
 TEST(RestartAcrossRanks, CheckpointOfNRanksContinuesOnMRanks) {
   const DemRanks ranks = DemRanks::world();
   const fs::path folder = shared_folder(ranks);
-  std::ostringstream plan;
-  DemEngine shared = dropped_bed(ranks), alone = dropped_bed(DemRanks::one());
-  shared.prepare(plan);
-  alone.prepare(plan);
+  DemEngine shared = prepared_bed(ranks), alone = prepared_bed(DemRanks::one());
   const long before = 900, after = 600;
   shared.run_steps(before);
   alone.run_steps(before);
@@ -60,6 +57,7 @@ TEST(RestartAcrossRanks, CheckpointOfNRanksContinuesOnMRanks) {
                         Case{"ranks -> ranks", "shared.h5", ranks},
                         Case{"1 -> ranks", "alone.h5", ranks}}) {
     DemEngine restarted(dropped_bed_settings(c.on), read_dem_checkpoint(folder / c.file));
+    std::ostringstream plan;
     restarted.prepare(plan);
     EXPECT_EQ(restarted.global_count(), n) << c.name;
     EXPECT_EQ(restarted.step(), before) << c.name;
@@ -84,10 +82,7 @@ TEST(RestartAcrossRanks, CheckpointOfNRanksContinuesOnMRanks) {
 TEST(SnapshotOnRanks, FirstRankWritesEveryParticle) {
   const DemRanks ranks = DemRanks::world();
   const fs::path folder = shared_folder(ranks);
-  std::ostringstream plan;
-  DemEngine shared = dropped_bed(ranks), alone = dropped_bed(DemRanks::one());
-  shared.prepare(plan);
-  alone.prepare(plan);
+  DemEngine shared = prepared_bed(ranks), alone = prepared_bed(DemRanks::one());
   shared.run_steps(700);
   alone.run_steps(700);
   auto writer = shared.snapshot_writer(folder, false);

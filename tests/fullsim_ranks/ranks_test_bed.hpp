@@ -4,6 +4,7 @@
 // and the positions of a run on any ranks, by particle id.
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 #include "tests/fullsim/dem/dem_test_scene.hpp"
@@ -28,6 +29,14 @@ inline DemEngine dropped_bed(const DemRanks& ranks) {
   const SimulationBox box{Vec3::Zero(), Vec3(15 * 0.0032, 15 * 0.0032, 0.03), {true, true, false}};
   DemEngine e(s, box, p);
   e.add_wall(Wall::plane("floor", Vec3::Zero(), Vec3::UnitZ()));
+  return e;
+}
+
+// The bed prepared (its plan not printed).
+inline DemEngine prepared_bed(const DemRanks& ranks) {
+  DemEngine e = dropped_bed(ranks);
+  std::ostringstream plan;
+  e.prepare(plan);
   return e;
 }
 
