@@ -18,6 +18,7 @@
 #include "fullsim/dem/particle_snapshots.hpp"
 #include "fullsim/dem/ranks/gathered_checkpoint.hpp"
 #include "fullsim/dem/ranks/gathered_particles.hpp"
+#include "fullsim/dem/ranks/merged_sink.hpp"
 #include "models/core/errors.hpp"
 
 // force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
@@ -200,7 +201,8 @@ std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double de
       particles_.set_next_id(id + 1);
     }
     halo_.own_all(particles_);
-    guard_.add_inserted_energy(0.5 * ParticleStore::sphere_mass(density, radius) * velocity.squaredNorm());
+    const double mass = ParticleStore::sphere_mass(density, radius);
+    guard_.add_inserted_energy(0.5 * mass * velocity.squaredNorm());
     rebuild_due_ = true;
     return id;
   }
@@ -386,7 +388,7 @@ void DemEngine::distribute() {
 void DemEngine::rebuild_shared(bool sink_due) {
   const DemRanks& ranks = settings_.ranks;
   halo_.drop_ghosts(particles_);
-  if (sink_due && sink_) sink_->remove(particles_, time_);
+  if (sink_due && sink_ && sink_->remove(particles_, time_) > 0) halo_.own_all(particles_);
   const double mine = static_cast<double>(particles_.size());
   const double most = ranks.max(mine), all = ranks.sum(mine);
   if (most > settings_.rebalance_above * all / ranks.size()) {
@@ -415,6 +417,11 @@ void DemEngine::guarded(Check&& check) const {
     failure = e.what();
   }
   if (auto agreed = settings_.ranks.agree_on_failure(failure)) throw NumericalFailure(*agreed);
+}
+
+std::optional<OutletSink> DemEngine::merged_outlet_sink() const {
+  if (!sink_ || !shared()) return sink_;
+  return merge_sink_books(*sink_, settings_.ranks);
 }
 
 std::size_t DemEngine::global_count() const {
@@ -647,14 +654,15 @@ namespace {
 // gathers its particles to the first rank, which writes them; a failure there stops every rank.
 class ParticleSnapshotWriter final : public SnapshotWriter {
  public:
-  ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file, const DemRanks& ranks)
+  ParticleSnapshotWriter(const DemEngine& engine, std::filesystem::path file,
+                         const DemRanks& ranks)
       : engine_(engine), ranks_(ranks), snapshots_(std::move(file), 1) {}
   void write() override {
     if (engine_.step() == last_step_) return;
     last_step_ = engine_.step();
-    ++count_;
     if (ranks_.size() == 1) {
       snapshots_.write(engine_.particles(), engine_.time(), engine_.step(), &engine_.outline());
+      ++count_;
       return;
     }
     const ParticleStore all =
@@ -666,6 +674,7 @@ class ParticleSnapshotWriter final : public SnapshotWriter {
         failure = e.what();
       }
     if (auto agreed = ranks_.agree_on_failure(failure)) throw std::runtime_error(*agreed);
+    ++count_;
   }
   std::size_t count() const override { return count_; }
   std::vector<std::filesystem::path> files() const override {

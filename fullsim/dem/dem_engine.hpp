@@ -150,7 +150,11 @@ class DemEngine final : public Stepper {
   // part of a checkpoint: the scene sets it again, and restore() keeps it.
   void set_outline(SceneOutline outline) { outline_ = std::move(outline); }
   const SceneOutline& outline() const { return outline_; }
+  // This rank's sink (on a shared run its books hold the grains this rank removed).
   const OutletSink* outlet_sink() const { return sink_ ? &*sink_ : nullptr; }
+  // The sink with every rank's books merged: the whole run's discharge (collective on a
+  // shared run; alone, a copy of the sink); none without a sink.
+  std::optional<OutletSink> merged_outlet_sink() const;
   const SimulationBox& box() const { return box_; }
   const RunReport& report() const { return report_; }
   // Of every rank's own particles (collective on a shared run).

@@ -1,5 +1,6 @@
 #include "fullsim/dem/outlet_sink.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace feedflow {
@@ -39,6 +40,7 @@ bool OutletSink::captures(const Vec3& x) const {
 std::size_t OutletSink::remove(ParticleStore& particles, double t) {
   std::vector<char> flagged(particles.size(), 0);
   std::size_t count = 0;
+  const std::size_t first_new = events_.size();
   for (std::size_t k = 0; k < particles.size(); ++k) {
     if (!captures(particles.position[k])) continue;
     flagged[k] = 1;
@@ -46,6 +48,10 @@ std::size_t OutletSink::remove(ParticleStore& particles, double t) {
     removed_mass_ += particles.mass[k];
     events_.push_back({t, particles.id[k], particles.mass[k]});
   }
+  // Booked in id order within one removal, so the books do not depend on the store's order
+  // (which the neighbour sort and the ranks change).
+  std::sort(events_.begin() + static_cast<std::ptrdiff_t>(first_new), events_.end(),
+            [](const SinkEvent& a, const SinkEvent& b) { return a.id < b.id; });
   if (count > 0) particles.remove_flagged(flagged);
   return count;
 }

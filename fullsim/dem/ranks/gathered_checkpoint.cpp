@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "fullsim/dem/ranks/merged_sink.hpp"
 #include "fullsim/dem/ranks/particle_record.hpp"
 
 namespace feedflow {
@@ -28,12 +29,6 @@ std::vector<double> pack(const DemCheckpoint& c, std::size_t owned) {
                  list.history.begin() + static_cast<std::ptrdiff_t>((e + 1) * h));
     }
   }
-  // The sink's books: removed mass, then (time, id, mass) per event.
-  if (c.sink) {
-    out.push_back(c.sink->removed_mass());
-    for (const SinkEvent& e : c.sink->events())
-      out.insert(out.end(), {e.time, static_cast<double>(e.id), e.mass});
-  }
   return out;
 }
 
@@ -53,11 +48,8 @@ DemCheckpoint gather_checkpoint(DemCheckpoint mine, std::size_t owned, const Dem
     std::size_t from;     // rank
   };
   std::vector<Entry> entries;
-  double removed_mass = 0.0;
-  std::vector<SinkEvent> events;
   for (std::size_t r = 0; r < all.size(); ++r) {
     const double* q = all[r].data();
-    const double* end = q + all[r].size();
     const auto count = static_cast<std::size_t>(*q++);
     for (std::size_t k = 0; k < count; ++k) {
       take_particle(q, gathered);
@@ -70,20 +62,8 @@ DemCheckpoint gather_checkpoint(DemCheckpoint mine, std::size_t owned, const Dem
         q += 1 + h;
       }
     }
-    if (mine.sink && q < end) {
-      removed_mass += *q++;
-      for (; q + 3 <= end; q += 3)
-        events.push_back({q[0], static_cast<std::uint32_t>(q[1]), q[2]});
-    }
   }
-  if (mine.sink) {
-    std::sort(events.begin(), events.end(), [](const SinkEvent& a, const SinkEvent& b) {
-      return a.time != b.time ? a.time < b.time : a.id < b.id;
-    });
-    const OutletSink& s = *mine.sink;
-    mine.sink = OutletSink::restored(s.is_box(), s.lower_or_point(), s.upper_or_outward(),
-                                     removed_mass, std::move(events));
-  }
+  if (mine.sink) mine.sink = merge_sink_books(*mine.sink, ranks);
 
   // The rows in slot order, partners by id.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> slot_of_id(gathered.size());
