@@ -425,7 +425,14 @@ std::optional<OutletSink> DemEngine::merged_outlet_sink() const {
 }
 
 std::size_t DemEngine::global_count() const {
+  if (!distributed()) return particles_.size();
   return static_cast<std::size_t>(settings_.ranks.sum(static_cast<double>(owned_count())));
+}
+
+const ParticleStore& DemEngine::whole_bed() const {
+  if (!distributed()) return particles_;
+  whole_bed_ = all_gather_particles(particles_, owned_count(), settings_.ranks);
+  return whole_bed_;
 }
 
 void DemEngine::rebuild_neighbours() {
@@ -722,7 +729,8 @@ double DemEngine::max_speed() const {
 }
 
 double DemEngine::kinetic_energy() const {
-  return settings_.ranks.sum(kinetic_energy_of(particles_, owned_count()));
+  const double mine = kinetic_energy_of(particles_, owned_count());
+  return distributed() ? settings_.ranks.sum(mine) : mine;
 }
 
 std::string DemEngine::performance_report() const { return performance().render(); }

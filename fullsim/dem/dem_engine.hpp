@@ -137,9 +137,14 @@ class DemEngine final : public Stepper {
   const ParticleStore& particles() const { return particles_; }
   // On a run shared among ranks: this rank's own particles are the store's first
   // owned_count() slots, the ghost copies of other ranks' particles follow; alone, all.
-  std::size_t owned_count() const { return shared() ? halo_.owned() : particles_.size(); }
+  // (Before prepare() every rank holds every particle, all its own.)
+  std::size_t owned_count() const { return distributed() ? halo_.owned() : particles_.size(); }
   // The particles of every rank (collective on a shared run).
   std::size_t global_count() const;
+  // Every rank's own particles in one store, what a scene measures: on a shared run each rank
+  // gets them all, in rank order (collective; valid until the next call or step); alone, or
+  // before the run is shared out, the store itself.
+  const ParticleStore& whole_bed() const;
   const RankDomains& rank_domains() const { return domains_; }
   const HaloExchange& halo() const { return halo_; }
   const NeighbourList& neighbours() const { return neighbours_; }
@@ -169,6 +174,7 @@ class DemEngine final : public Stepper {
  private:
   long steps_to(double t) const;  // whole steps until t is reached (stepper.hpp)
   bool shared() const { return settings_.ranks.shared(); }
+  bool distributed() const { return shared() && halo_.initialised(); }  // particles shared out
   void rebuild_neighbours();
   // A shared run's rebuild: the captured particles removed, the sub-boxes re-cut when out of
   // balance, particles moved to their owners, re-sorted, their ghosts copied.
@@ -222,6 +228,7 @@ class DemEngine final : public Stepper {
   std::string spring_warning_;
   RankDomains domains_;
   HaloExchange halo_;
+  mutable ParticleStore whole_bed_;  // whole_bed()'s gathered store on a shared run
   std::size_t rebalances_ = 0;
 };
 

@@ -36,7 +36,7 @@ std::vector<double> pack(const DemCheckpoint& c, std::size_t owned) {
 
 DemCheckpoint gather_checkpoint(DemCheckpoint mine, std::size_t owned, const DemRanks& ranks) {
   const std::size_t h = mine.neighbours.history_size();
-  const auto all = ranks.gather(pack(mine, owned));
+  const auto all = ranks.all_gather(pack(mine, owned));
   ParticleStore gathered;
   gathered.set_wall_history_stride(mine.particles.wall_history_stride());
   gathered.set_next_id(mine.particles.next_id());

@@ -13,7 +13,8 @@ namespace feedflow {
 
 // `mine` is this rank's checkpoint: its store (own particles in the first `owned` slots, ghost
 // copies behind), its list (rows for the own particles), its sink with its own books.
-// Collective; the first rank gets the whole checkpoint, the others an empty store.
+// Collective; every rank gets the whole checkpoint (the first writes it; a scene that rebuilds
+// its engine from it, as the drum does to start turning, does so on every rank).
 DemCheckpoint gather_checkpoint(DemCheckpoint mine, std::size_t owned, const DemRanks& ranks);
 
 }  // namespace feedflow

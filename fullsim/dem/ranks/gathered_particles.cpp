@@ -5,18 +5,34 @@
 #include "fullsim/dem/ranks/particle_record.hpp"
 
 namespace feedflow {
+namespace {
 
-ParticleStore gather_particles(const ParticleStore& p, std::size_t owned, const DemRanks& ranks) {
+std::vector<double> own_records(const ParticleStore& p, std::size_t owned) {
   std::vector<double> mine;
   for (std::size_t k = 0; k < owned; ++k) put_particle(mine, p, k);
+  return mine;
+}
+
+ParticleStore store_of(const std::vector<std::vector<double>>& records, const ParticleStore& like) {
   ParticleStore all;
-  all.set_wall_history_stride(p.wall_history_stride());
-  for (const std::vector<double>& from : ranks.gather(mine)) {
+  all.set_wall_history_stride(like.wall_history_stride());
+  for (const std::vector<double>& from : records) {
     const double* q = from.data();
     const double* end = q + from.size();
     while (q < end) take_particle(q, all);
   }
   return all;
+}
+
+}  // namespace
+
+ParticleStore gather_particles(const ParticleStore& p, std::size_t owned, const DemRanks& ranks) {
+  return store_of(ranks.gather(own_records(p, owned)), p);
+}
+
+ParticleStore all_gather_particles(const ParticleStore& p, std::size_t owned,
+                                   const DemRanks& ranks) {
+  return store_of(ranks.all_gather(own_records(p, owned)), p);
 }
 
 }  // namespace feedflow

@@ -24,6 +24,8 @@ class HaloExchange {
  public:
   // This rank's own particles: the first owned() slots of the store.
   std::size_t owned() const { return owned_; }
+  // Whether the particles were shared out (the first migration done).
+  bool initialised() const { return initialised_; }
   std::size_t ghosts() const { return ghosts_; }
   // The ranks ghosts come from and go to.
   const std::vector<int>& neighbour_ranks() const { return neighbours_; }

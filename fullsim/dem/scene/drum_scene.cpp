@@ -131,7 +131,7 @@ void DrumScene::start_rotation(std::ostream& log) {
 }
 
 DrumSample DrumScene::sample() const {
-  const ParticleStore& p = engine_->particles();
+  const ParticleStore& p = engine_->whole_bed();
   const double r = settings_.material.particle.radius;
   const double R = 0.5 * spec_.diameter;
   const double omega = spec_.speed;

@@ -141,7 +141,7 @@ void InclinedPlaneScene::open_gate(std::ostream& log) {
 }
 
 bool InclinedPlaneScene::flow_stopped() const {
-  const ParticleStore& p = engine_->particles();
+  const ParticleStore& p = engine_->whole_bed();
   if (p.size() == 0) return true;
   const double r = settings_.material.particle.radius;
   const double m = p.mass[0];
@@ -149,7 +149,7 @@ bool InclinedPlaneScene::flow_stopped() const {
 }
 
 DepositProfile InclinedPlaneScene::deposit() const {
-  return measure_deposit(engine_->particles(), spec_.ramp_length, ramp_surface(),
+  return measure_deposit(engine_->whole_bed(), spec_.ramp_length, ramp_surface(),
                          2.0 * settings_.material.particle.radius);
 }
 

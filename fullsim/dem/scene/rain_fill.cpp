@@ -78,9 +78,10 @@ double resting_fill_top(const ParticleStore& p, double resting_speed) {
 }
 
 bool overlaps_anything(const DemEngine& engine, const Vec3& x, double radius) {
-  std::vector<std::size_t> all(engine.particles().size());
+  const ParticleStore& bed = engine.whole_bed();
+  std::vector<std::size_t> all(bed.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  return touches_particle(engine.particles(), engine.box(), all, x, radius) ||
+  return touches_particle(bed, engine.box(), all, x, radius) ||
          touches_wall(engine, x, radius);
 }
 
@@ -148,14 +149,15 @@ bool RainFill::insert_batch(DemEngine& engine) {
   if (!batch_lower_z_) {
     batch_lower_z_ = s.region_lower.z();
     if (s.follow_gap > 0.0) {
-      const double top = resting_fill_top(engine.particles(), s.resting_speed);
+      const double top = resting_fill_top(engine.whole_bed(), s.resting_speed);
       if (std::isfinite(top)) batch_lower_z_ = std::max(*batch_lower_z_, top + s.follow_gap);
     }
   }
   Vec3 lower = s.region_lower;
   lower.z() = *batch_lower_z_;
-  // Particles that can touch a sphere placed in the region.
-  const ParticleStore& p = engine.particles();
+  // Particles that can touch a sphere placed in the region (on a run shared among ranks every
+  // rank sees them all and places the same spheres).
+  const ParticleStore& p = engine.whole_bed();
   std::vector<std::size_t> near;
   const double reach = s.radius + p.max_radius();
   for (std::size_t k = 0; k < p.size(); ++k) {
@@ -201,7 +203,7 @@ bool RainFill::target_reached(const DemEngine& engine) const {
   const RainFillSettings& s = settings_;
   return report_.inserted_mass + 0.5 * sphere_mass_ >= s.target_mass ||
          report_.inserted_count >= s.target_count ||
-         (s.target_height && resting_fill_top(engine.particles(), s.resting_speed) >= *s.target_height);
+         (s.target_height && resting_fill_top(engine.whole_bed(), s.resting_speed) >= *s.target_height);
 }
 
 FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
@@ -215,8 +217,10 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
   if (phase_ == Phase::done) return report;
   if (phase_ == Phase::start) {
     rng_.seed(s.seed);
-    sunk_before_ = engine.outlet_sink() ? engine.outlet_sink()->removed_mass() : 0.0;
-    sunk_count_before_ = engine.outlet_sink() ? engine.outlet_sink()->removed_count() : 0;
+    if (const auto sink = engine.merged_outlet_sink()) {
+      sunk_before_ = sink->removed_mass();
+      sunk_count_before_ = sink->removed_count();
+    }
     t0_ = engine.time();
     if (!insert_batch(engine)) return interrupted();
     phase_ = Phase::inserting;
@@ -254,7 +258,7 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
             elapsed, (report.inserted_mass - mass_at_start) / std::max(goal - mass_at_start, 1e-300));
         log << format("  fill: %.4g of %.4g kg in at t = %.4g s (%zu spheres), %.0f s wall, "
                       "ETA of the insertion %.0f s\n",
-                      report.inserted_mass, goal, engine.time(), engine.particles().size(), elapsed,
+                      report.inserted_mass, goal, engine.time(), engine.global_count(), elapsed,
                       std::max(0.0, eta));
         next_note_ += 0.1 * goal;
       }
@@ -272,7 +276,7 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
   // Settling: at least one check interval, so freshly inserted spheres have landed.
   do {
     if (!advance(engine, s.settle_check_interval)) return interrupted();
-    report.final_max_speed = kept_max_speed(engine.particles(), s.trim_height);
+    report.final_max_speed = kept_max_speed(engine.whole_bed(), s.trim_height);
     report.settled = report.final_max_speed < s.settle_speed;
     if (++settle_checks_ % 20 == 0)  // a line per 0.1 s of settling (default check interval)
       log << format("  fill: settling at t = %.4g s, largest kept speed %.3g mm/s (goal %.3g)\n",
@@ -286,22 +290,25 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
 void RainFill::finish(DemEngine& engine, std::ostream& log) {
   const RainFillSettings& s = settings_;
   FillReport& report = report_;
-  ParticleStore& p = engine.particles();
   if (s.trim_height) {
-    std::vector<char> above(p.size(), 0);
-    for (std::size_t k = 0; k < p.size(); ++k)
-      if (p.position[k].z() > *s.trim_height) {
-        above[k] = 1;
+    // Booked from the whole bed; each rank removes its own (a ghost's flag is ignored).
+    const ParticleStore& bed = engine.whole_bed();
+    for (std::size_t k = 0; k < bed.size(); ++k)
+      if (bed.position[k].z() > *s.trim_height) {
         ++report.trimmed_count;
-        report.trimmed_mass += p.mass[k];
+        report.trimmed_mass += bed.mass[k];
       }
+    const ParticleStore& mine = engine.particles();
+    std::vector<char> above(mine.size(), 0);
+    for (std::size_t k = 0; k < mine.size(); ++k) above[k] = mine.position[k].z() > *s.trim_height;
     if (report.trimmed_count > 0) engine.remove_particles(above);
   }
+  ParticleStore& p = engine.particles();
   for (std::size_t k = 0; k < p.size(); ++k)
     p.layer[k] = std::isfinite(s.band_height)
                      ? std::floor((p.position[k].z() - s.band_origin) / s.band_height)
                      : 0.0;
-  if (const OutletSink* sink = engine.outlet_sink()) {
+  if (const auto sink = engine.merged_outlet_sink()) {
     report.sunk_mass = sink->removed_mass() - sunk_before_;
     report.sunk_count = sink->removed_count() - sunk_count_before_;
   }
