@@ -43,13 +43,9 @@ struct SimulateArguments {
 
 int run_simulate(const SimulateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
-  // Under a launcher with several ranks each would run the whole scene into the same folder.
-  if (RankTeam::world().size() > 1)
-    throw InputError("mpirun", "",
-                     "feedflow simulate runs its scenes in one process yet (the DEM engine shares "
-                     "a run among MPI ranks, the hopper, drum and chute scenes do not yet): run it "
-                     "without mpirun; under mpirun, `feedflow sweep --rung L2|L3` shares whole "
-                     "runs among the ranks");
+  // Under a launcher with several ranks a DEM run is shared among them: each runs the scene on
+  // its part of the particles, the first writes the files and the log.
+  const RankTeam& team = RankTeam::world();
   std::vector<SetOverride> overrides;
   for (const auto& s : args.options.sets) overrides.push_back(parse_set_override(s));
   std::optional<Solver> asked;
@@ -70,6 +66,11 @@ int run_simulate(const SimulateArguments& args) {
   if (!args.options.quiet)
     for (const auto& w : c.warnings) std::cerr << "feedflow: warning: " << w << '\n';
   const SolverChoice choice = choose_solver(c, asked);
+  if (team.size() > 1 && choice.solver != Solver::dem)
+    throw InputError("mpirun", "",
+                     "the CEL-FEM solver runs in one process (a DEM run is shared among MPI "
+                     "ranks): run it without mpirun; under mpirun, `feedflow sweep --rung L2` "
+                     "shares whole runs among the ranks");
 
   SimulationRequest request;
   request.case_data = c;
@@ -78,20 +79,37 @@ int run_simulate(const SimulateArguments& args) {
   // A run writes its snapshots and checkpoint as it goes: it needs a folder even with --json -.
   request.out = *output_folder(args.options, c.name, std::string("_") + to_string(choice.solver), true);
   request.restart = args.restart;
-  request.progress = !args.options.quiet && isatty(STDERR_FILENO);
-  request.log = args.options.human_output() ? &std::cout : nullptr;
+  request.progress = team.root() && !args.options.quiet && isatty(STDERR_FILENO);
+  request.log = team.root() && args.options.human_output() ? &std::cout : nullptr;
   if (request.log) std::cout << std::unitbuf;  // a run logged to a file shows its phases as they come
-  OutputFolder folder(request.out, "--out");  // created and locked until the run ends
-  if (request.log) *request.log << "feedflow simulate: " << choice.reason << '\n';
+  if (team.size() > 1) request.ranks = DemRanks::world();
+  // Created and locked until the run ends, by the first rank; the others stop with it when
+  // it cannot.
+  std::optional<OutputFolder> folder;
+  std::optional<InputError> unclaimed;
+  if (team.root()) try {
+      folder.emplace(request.out, "--out");
+    } catch (const InputError& e) {
+      unclaimed = e;
+    }
+  const bool claimed = team.broadcast(unclaimed ? 0 : 1) != 0;  // the first rank's
+  if (unclaimed) throw *unclaimed;
+  if (!claimed) throw InputError("--out", "", "the first rank could not claim the output folder");
+  if (request.log) {
+    *request.log << "feedflow simulate: " << choice.reason << '\n';
+    if (team.size() > 1)
+      *request.log << "feedflow simulate: the DEM run shared among " << team.size() << " MPI ranks\n";
+  }
 
   install_interrupt_handler();
   SimulationOutcome outcome;
   try {
     outcome = simulate(request);
   } catch (...) {
-    folder.discard_if_unused();  // a run that failed before writing anything leaves no folder
+    if (folder) folder->discard_if_unused();  // a run that failed before writing anything leaves no folder
     throw;
   }
+  if (!team.root()) return verdict_exit_code(args.options, outcome.record.verdict.status);
   DesignRecord& record = outcome.record;
   describe_case(c, record);
   record.assumptions.insert(record.assumptions.begin(), choice.reason);
@@ -109,7 +127,7 @@ int run_simulate(const SimulateArguments& args) {
          report_files(request.out, record, record_pictures(record, request.out, std::cerr)))
       files.push_back(std::move(file));
   auto written = write_outputs(files, args.options.json_to_stdout() ? &json : nullptr, args.options.verbose,
-                               &folder);
+                               &*folder);
   for (auto& f : outcome.files) written.push_back(std::move(f));
 
   if (args.options.human_output()) {
@@ -151,7 +169,18 @@ void add_simulate_command(CLI::App& app, int& exit_code) {
   add_case_options(*command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
   command->add_flag("--report", args->report,
                     "also write report.pdf and report.html, with pictures of the simulation");
-  command->callback([args, &exit_code] { exit_code = run_simulate(*args); });
+  command->callback([args, &exit_code] {
+    // A run shared among ranks fails on every rank alike: the first says why.
+    try {
+      exit_code = run_simulate(*args);
+    } catch (const InputError&) {
+      if (RankTeam::world().root()) throw;
+      exit_code = kExitBadInput;
+    } catch (const NumericalFailure&) {
+      if (RankTeam::world().root()) throw;
+      exit_code = kExitNumericalFailure;
+    }
+  });
 }
 
 }  // namespace feedflow

@@ -5,7 +5,7 @@
 
 namespace feedflow {
 
-DemSettings dem_case_settings(const Case& c) {
+DemSettings dem_case_settings(const Case& c, const DemRanks& ranks) {
   if (!c.material.dem)
     throw InputError(c.file, "material", "material " + c.material.name +
                                              " has no [dem] parameters (seed Table 2); the DEM needs them");
@@ -15,6 +15,7 @@ DemSettings dem_case_settings(const Case& c) {
   if (c.dem.time_step) s.requested_time_step = *c.dem.time_step;
   s.force_time_step = c.dem.force_time_step == "yes";
   if (c.dem.time_step_safety) s.stable_step_fraction = *c.dem.time_step_safety;
+  s.ranks = ranks;
   return s;
 }
 

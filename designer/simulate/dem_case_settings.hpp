@@ -12,8 +12,9 @@
 
 namespace feedflow {
 
-// Throws InputError naming the material when it has no [dem] parameters.
-DemSettings dem_case_settings(const Case& c);
+// The run shared among `ranks`. Throws InputError naming the material when it has no [dem]
+// parameters.
+DemSettings dem_case_settings(const Case& c, const DemRanks& ranks = DemRanks::one());
 
 // Throws InputError naming dem.slab_depth when a periodic slab is thinner than two neighbour
 // cutoffs of the settings' particles (a particle would meet its own image).

@@ -38,7 +38,7 @@ class DemChuteAdapter final : public SceneAdapter {
   explicit DemChuteAdapter(const SimulationRequest& request)
       : request_(request),
         chute_(std::get<Chute>(request.case_data.equipment)),
-        settings_(dem_case_settings(request.case_data)),
+        settings_(dem_case_settings(request.case_data, request.ranks)),
         scene_(settings_, plane_spec(request.case_data, settings_)) {}
 
   std::string what() const override { return "the bin"; }
@@ -87,11 +87,11 @@ class DemChuteAdapter final : public SceneAdapter {
     run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
     run.sample = [this] {
       const DemEngine& e = scene_.engine();
-      const OutletSink* sink = e.outlet_sink();
+      const auto sink = e.merged_outlet_sink();
       return std::vector<double>{e.time(),
                                  e.time() - release_,
                                  e.kinetic_energy(),
-                                 static_cast<double>(e.particles().size()),
+                                 static_cast<double>(e.global_count()),
                                  sink ? sink->removed_mass() : 0.0,
                                  scene_.deposit().front};
     };
@@ -118,8 +118,8 @@ class DemChuteAdapter final : public SceneAdapter {
                                   Rung::L3, "mm"});
     results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
                                                    "DEM: farthest bin with a particle", Rung::L3, ""});
-    const OutletSink* sink = e.outlet_sink();
-    results.emplace_back("particles_left", Estimate{static_cast<double>(e.particles().size()), "", std::nullopt,
+    const auto sink = e.merged_outlet_sink();
+    results.emplace_back("particles_left", Estimate{static_cast<double>(e.global_count()), "", std::nullopt,
                                                     std::nullopt, "DEM scene", Rung::L3, ""});
     results.emplace_back("mass_off_ramp_end_per_width",
                          Estimate{(sink ? sink->removed_mass() : 0.0) / scene_.spec().slab_depth, "kg/m", std::nullopt,

@@ -24,8 +24,8 @@ double shell_friction(const Drum& drum) {
   return drum.wall_friction_angle ? std::tan(*drum.wall_friction_angle) : 0.364;
 }
 
-DemSettings drum_settings(const Case& c) {
-  DemSettings s = dem_case_settings(c);
+DemSettings drum_settings(const Case& c, const DemRanks& ranks) {
+  DemSettings s = dem_case_settings(c, ranks);
   if (c.dem.slab_depth) s.material.particle_wall.friction = shell_friction(std::get<Drum>(c.equipment));
   return s;
 }
@@ -59,7 +59,7 @@ class DemDrumAdapter final : public SceneAdapter {
   explicit DemDrumAdapter(const SimulationRequest& request)
       : request_(request),
         drum_(std::get<Drum>(request.case_data.equipment)),
-        settings_(drum_settings(request.case_data)),
+        settings_(drum_settings(request.case_data, request.ranks)),
         scene_(settings_, drum_spec(request.case_data, settings_)),
         watch_(angle_watch(drum_)) {}
 
@@ -160,7 +160,7 @@ class DemDrumAdapter final : public SceneAdapter {
                            measured ? "DEM: measured bed state (" + regime.reason + ")"
                                     : "DEM: the run ended within the spin-up of " + format_number(watch_.spin_up(), 3) + " s",
                            Rung::L3, ""});
-    results.emplace_back("particles", Estimate{static_cast<double>(scene_.engine().particles().size()), "",
+    results.emplace_back("particles", Estimate{static_cast<double>(scene_.engine().global_count()), "",
                                                std::nullopt, std::nullopt, "DEM scene", Rung::L3, ""});
     if (steady)
       results.emplace_back("steady_window", Estimate{steady->to - steady->from, "s", steady->from, steady->to,
@@ -206,7 +206,7 @@ class DemDrumAdapter final : public SceneAdapter {
     const auto& spec = scene_.spec();
     const double r = settings_.material.particle.radius;
     auto& a = record.assumptions;
-    a.push_back("DEM drum: " + format_number(static_cast<double>(scene_.engine().particles().size()), 6) + " spheres of R = " +
+    a.push_back("DEM drum: " + format_number(static_cast<double>(scene_.engine().global_count()), 6) + " spheres of R = " +
                 format_number(r * 1e3, 3) + " mm, Table 2 parameters, law " + contact_law_name(scene_.engine().effective_law()) +
                 ", time step " + format_number(scene_.engine().time_step() * 1e6, 3) + " us");
     add_time_step_warning(scene_.engine(), a);

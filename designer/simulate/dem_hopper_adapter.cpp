@@ -38,6 +38,7 @@ class DemHopperAdapter final : public SceneAdapter {
  public:
   explicit DemHopperAdapter(const SimulationRequest& request)
       : request_(request), scene_(hopper_scene_from_case(request.case_data)) {
+    scene_.settings.ranks = request.ranks;
     // The rows' time axis is the time after the opening.
     discharge_.trickle_rate = discharge_.arch.trickle_share * scene_.slab.depth *
                               outlet_scale_rate(request.case_data.material.bulk.density, scene_.slab.outlet_width);
@@ -83,11 +84,13 @@ class DemHopperAdapter final : public SceneAdapter {
       const DemEngine& e = *engine_;
       const double t_open = scene_.opening_time;
       double out = 0.0;
-      for (const auto& ev : e.outlet_sink()->events())
+      const OutletSink sink = *e.merged_outlet_sink();
+      for (const auto& ev : sink.events())
         if (ev.time > t_open) out += ev.mass;
-      flow_line_.add(e.time() - t_open, flow_line());
-      return std::vector<double>{e.time(), e.time() - t_open, out, static_cast<double>(e.particles().size()),
-                                 e.particles().total_mass(), e.kinetic_energy()};
+      const ParticleStore& bed = e.whole_bed();
+      flow_line_.add(e.time() - t_open, flow_line(bed));
+      return std::vector<double>{e.time(), e.time() - t_open, out, static_cast<double>(bed.size()),
+                                 bed.total_mass(), e.kinetic_energy()};
     };
     discharge_.fill_mass = fill_mass();
     if (!request_.end_time)  // a given --time is run to its end
@@ -100,9 +103,10 @@ class DemHopperAdapter final : public SceneAdapter {
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
     const double scale = scene_.depth_scale();
-    const OutletSink& sink = *engine_->outlet_sink();
+    const OutletSink sink = *engine_->merged_outlet_sink();
     const double t_open = scene_.opening_time;
-    log_mass_book();
+    const ParticleStore& bed = engine_->whole_bed();
+    log_mass_book(sink, bed);
     const double discharged = sink.removed_mass() - scene_.fill.sunk_mass;
     const double last = sink.events().empty() ? t_open : sink.events().back().time;
     DischargeWording w{Rung::L3, scale, slab_model(), "",
@@ -114,7 +118,7 @@ class DemHopperAdapter final : public SceneAdapter {
     if (rate.found)
       results.emplace_back("mass_flow_rate_slab", number(rate.rate, "kg/s", rate.low, rate.high,
                                                          "DEM slab as simulated (before the depth scaling)"));
-    const FlowOrder order = layer_order();
+    const FlowOrder order = layer_order(sink, bed);
     results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
                                                 format("layer bands: pairs from different bands leaving in band order "
                                                        "(%d bands; %s by F >= %.2f)",
@@ -184,22 +188,22 @@ class DemHopperAdapter final : public SceneAdapter {
 
   // The order of the bands: of the particles in the order they left, and of those left in
   // the hopper.
-  FlowOrder layer_order() const {
+  FlowOrder layer_order(const OutletSink& sink, const ParticleStore& bed) const {
     std::map<std::uint32_t, int> band_of;
     for (std::size_t k = 0; k < scene_.initial_ids.size(); ++k)
       band_of[scene_.initial_ids[k]] = static_cast<int>(scene_.initial_layers[k]);
     std::vector<int> out_bands, left_bands;
-    for (const auto& ev : engine_->outlet_sink()->events())
+    for (const auto& ev : sink.events())
       if (ev.time > scene_.opening_time && band_of.count(ev.id)) out_bands.push_back(band_of[ev.id]);
-    for (std::uint32_t id : engine_->particles().id)
+    for (std::uint32_t id : bed.id)
       if (band_of.count(id)) left_bands.push_back(band_of[id]);
     return flow_order(out_bands, left_bands);
   }
 
-  // The particle speeds along the flow-pattern line now.
-  SpeedProfile flow_line() const {
+  // The particle speeds along the flow-pattern line now (of the whole bed).
+  SpeedProfile flow_line(const ParticleStore& bed) const {
     const double r = scene_.slab.radius;
-    return speed_profile(engine_->particles(), 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
+    return speed_profile(bed, 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
   }
 
   std::string describe_flow_pattern() const {
@@ -215,10 +219,9 @@ class DemHopperAdapter final : public SceneAdapter {
                   scene_.slab.depth * 1e3, scene_.depth_scale(), scene_.slot_length);
   }
 
-  void log_mass_book() const {
+  void log_mass_book(const OutletSink& sink, const ParticleStore& bed) const {
     if (!request_.log) return;
-    const OutletSink& sink = *engine_->outlet_sink();
-    const double in_domain = engine_->particles().total_mass();
+    const double in_domain = bed.total_mass();
     const double booked = in_domain + sink.removed_mass() + scene_.fill.trimmed_mass;
     *request_.log << format("mass book: inserted %.9g kg = in the domain %.9g kg + through the sink %.9g kg + "
                             "trimmed %.9g kg (difference %.3g kg)\n",

@@ -102,7 +102,7 @@ bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, ProgressSink* progr
   s.opening_time = engine.time();
   s.opening_step = engine.step();
   engine.set_wall_removal_time("gate", s.opening_time);
-  const ParticleStore& p = engine.particles();
+  const ParticleStore& p = engine.whole_bed();
   s.initial_ids = p.id;
   s.initial_layers = p.layer;
   char line[200];

@@ -37,13 +37,14 @@ SimulationOutcome interrupted_while_filling(const SceneAdapter& adapter, const S
   out.end = SimulationEnd::interrupted;
   VerdictBuilder v;
   const std::filesystem::path checkpoint = scene_checkpoint_path(request.out);
-  const bool saved = !request.out.empty() && write_whole_checkpoint(checkpoint, [&](Hdf5File& f) {
+  const bool on_disk = request.ranks.rank() == 0;
+  const bool saved = !request.out.empty() && write_whole_checkpoint(checkpoint, on_disk, [&](Hdf5File& f) {
     if (!adapter.save_fill(f)) return false;
     save_restart_identity(identity, f);
     return true;
   });
   if (saved) {
-    out.files.push_back(checkpoint);
+    if (on_disk) out.files.push_back(checkpoint);
     v.note("interrupted while filling " + adapter.what() + ": the fill continues from the checkpoint");
   } else {
     v.note("interrupted while filling " + adapter.what() + " before its first batch was in: no checkpoint, run again");

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "designer/case/case.hpp"
+#include "fullsim/dem/ranks/dem_ranks.hpp"
 #include "models/core/design_record.hpp"
 #include "models/core/time_series.hpp"
 
@@ -24,6 +25,9 @@ struct SimulationRequest {
   std::filesystem::path restart;    // checkpoint to continue from; empty: a new run
   bool progress = true;             // progress line with ETA on a terminal
   std::ostream* log = nullptr;      // plan, phases and performance block; null: silent
+  // The processes a DEM run is shared among (each runs the same scene; the first writes the
+  // files); one: alone. The CEL solver runs alone.
+  DemRanks ranks = DemRanks::one();
 };
 
 enum class SimulationEnd { completed, interrupted };

@@ -53,6 +53,13 @@ Hdf5File::Hdf5File(std::filesystem::path path, Mode mode) : path_(std::move(path
     if (file_ < 0) fail("cannot open for appending (truncated or damaged?)");
     return;
   }
+  if (mode == Mode::scratch) {
+    Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    H5Pset_fapl_core(access.get(), 1 << 20, false);  // grows by 1 MiB, no backing store
+    file_ = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+    if (file_ < 0) fail("cannot create in memory");
+    return;
+  }
   std::error_code ec;
   if (path_.has_parent_path()) std::filesystem::create_directories(path_.parent_path(), ec);
   // The 1.10 file format: object headers, B-trees and the superblock carry checksums, so a damaged

@@ -17,7 +17,9 @@ namespace feedflow {
 
 class Hdf5File {
  public:
-  enum class Mode { create, append, read };  // create truncates; append creates if missing
+  // create truncates; append creates if missing; scratch: a new file in memory only (written to
+  // and dropped, nothing on disk; its path only names it).
+  enum class Mode { create, append, read, scratch };
 
   Hdf5File(std::filesystem::path path, Mode mode);
   ~Hdf5File();

@@ -129,6 +129,9 @@ FEEDFLOW_FORWARD(hdf5_library(), hid_t, H5Pcreate, (hid_t cls_id), (cls_id))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_chunk, (hid_t plist_id, int ndims, const hsize_t dim[]),
                  (plist_id, ndims, dim))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_fletcher32, (hid_t plist_id), (plist_id))
+FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_fapl_core,
+                 (hid_t fapl_id, size_t increment, hbool_t backing_store),
+                 (fapl_id, increment, backing_store))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_libver_bounds,
                  (hid_t plist_id, H5F_libver_t low, H5F_libver_t high), (plist_id, low, high))
 FEEDFLOW_FORWARD(hdf5_library(), herr_t, H5Pset_create_intermediate_group,

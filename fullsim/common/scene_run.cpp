@@ -38,7 +38,7 @@ std::string column_names(const std::vector<TimeSeriesColumn>& columns) {
 // The stepper's state and the /scene group (series and the scene's own data).
 void write_checkpoint(const Stepper& stepper, const std::filesystem::path& path,
                       const TimeSeries& series, const SceneRunOptions& o) {
-  write_whole_checkpoint(path, [&](Hdf5File& f) {
+  write_whole_checkpoint(path, stepper.writes_files(), [&](Hdf5File& f) {
     stepper.write_checkpoint(f);
     f.create_group("/scene");
     f.set_attribute("/scene", "series_columns", column_names(series.columns()));
@@ -59,13 +59,28 @@ double next_snapshot_after(const Stepper& stepper, double origin, double interva
 
 }  // namespace
 
-bool write_whole_checkpoint(const std::filesystem::path& path, const std::function<bool(Hdf5File&)>& write) {
+bool write_whole_checkpoint(const std::filesystem::path& path, bool on_disk,
+                            const std::function<bool(Hdf5File&)>& write) {
   namespace fs = std::filesystem;
+  if (!on_disk) {
+    Hdf5File f(path, Hdf5File::Mode::scratch);
+    return write(f);
+  }
   const fs::path temporary = path.string() + ".tmp" + std::to_string(::getpid());
   try {
-    Hdf5File f(temporary, Hdf5File::Mode::create);
-    const bool keep = write(f);
-    f.close();
+    // A file that cannot be created still gets the state written (in memory), so an engine
+    // shared among processes gathers it on every one before this one reports the failure.
+    std::optional<Hdf5File> f;
+    std::string cannot;
+    try {
+      f.emplace(temporary, Hdf5File::Mode::create);
+    } catch (const std::runtime_error& e) {
+      cannot = e.what();
+      f.emplace(temporary, Hdf5File::Mode::scratch);
+    }
+    const bool keep = write(*f);
+    if (!cannot.empty()) throw std::runtime_error(cannot);
+    f->close();
     if (!keep) {
       fs::remove(temporary);
       return false;
@@ -187,7 +202,7 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
       r.end = RunEnd::stopped;
       break;
     }
-    if (interrupt_requested() && stepper.checkpoint_ready()) {  // else after the next steps
+    if (stepper.raised_on_any(interrupt_requested()) && stepper.checkpoint_ready()) {  // else after the next steps
       r.end = RunEnd::interrupted;
       break;
     }
@@ -205,11 +220,17 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   progress.finish();
   const auto checkpoint_start = Clock::now();
   const std::filesystem::path checkpoint = scene_checkpoint_path(o.out);
-  write_checkpoint(stepper, checkpoint, r.series, o);
+  std::optional<std::string> failure;
+  try {
+    write_checkpoint(stepper, checkpoint, r.series, o);
+  } catch (const std::runtime_error& e) {
+    failure = e.what();
+  }
+  if (auto agreed = stepper.agreed_failure(failure)) throw std::runtime_error(*agreed);
   const double checkpoint_seconds = seconds_since(checkpoint_start);
   if (snapshots)
     for (auto& f : snapshots->files()) r.files.push_back(std::move(f));
-  r.files.push_back(checkpoint);
+  if (stepper.writes_files()) r.files.push_back(checkpoint);
   r.wall_seconds = seconds_since(start);
 
   if (r.end == RunEnd::interrupted)

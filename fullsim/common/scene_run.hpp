@@ -78,8 +78,10 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& options);
 
 // Writes a checkpoint whole or not at all: `write` fills a temporary beside `path`, which is
 // then renamed over it, or returns false (nothing to save: no file, returns false). Throws
-// std::runtime_error naming `path`.
-bool write_whole_checkpoint(const std::filesystem::path& path, const std::function<bool(Hdf5File&)>& write);
+// std::runtime_error naming `path`. Not `on_disk`: `write` fills a file in memory, which is
+// dropped (a process of a shared run that does not write files).
+bool write_whole_checkpoint(const std::filesystem::path& path, bool on_disk,
+                            const std::function<bool(Hdf5File&)>& write);
 
 // The checkpoint file of a scene run in `folder`.
 std::filesystem::path scene_checkpoint_path(const std::filesystem::path& folder);

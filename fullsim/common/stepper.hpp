@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <string>
 
 #include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/common/run_report.hpp"
@@ -69,6 +70,16 @@ class Stepper {
   // Whether write_checkpoint() can be called now (a DEM engine right after particles were
   // inserted or removed needs a step first, which rebuilds its neighbour list).
   virtual bool checkpoint_ready() const { return true; }
+
+  // An engine whose run is shared among processes (MPI ranks) runs the same scene loop on each:
+  // the loop's decisions are agreed (a flag is raised if any process raised it; a failure on one
+  // is a failure on all), and one process writes the files (the others build the same
+  // checkpoint, in memory, and drop it). Alone: as given, and it writes.
+  virtual bool raised_on_any(bool flag) const { return flag; }
+  virtual std::optional<std::string> agreed_failure(std::optional<std::string> mine) const {
+    return mine;
+  }
+  virtual bool writes_files() const { return true; }
 
   // The engine's field snapshots (HDF5 with an XDMF sidecar that ParaView opens) in `folder`;
   // `continuing`: a restarted run, whose first part's snapshots are kept.

@@ -100,7 +100,7 @@ DemCheckpoint DemEngine::checkpoint() const {
   c.guard_energy_floor = guard_.energy_floor();
   c.guard_gravity_work = guard_.gravity_work();
   c.guard_wall_speed = guard_.wall_speed();
-  if (shared()) return gather_checkpoint(std::move(c), owned_count(), settings_.ranks);
+  if (distributed()) return gather_checkpoint(std::move(c), owned_count(), settings_.ranks);
   return c;
 }
 
@@ -706,12 +706,9 @@ std::unique_ptr<SnapshotWriter> DemEngine::snapshot_writer(const std::filesystem
   return std::make_unique<ParticleSnapshotWriter>(*this, folder / name, settings_.ranks);
 }
 
-void DemEngine::write_checkpoint(Hdf5File& file) const {
-  if (shared())
-    throw std::runtime_error("a scene's checkpoint of a DEM run shared among ranks is not "
-                             "written yet: run the scene on one rank");
-  write_dem_checkpoint(file, checkpoint());
-}
+// Shared among ranks every rank writes the gathered checkpoint: into the scene's file on the
+// first, into one in memory on the others (scene_run.hpp).
+void DemEngine::write_checkpoint(Hdf5File& file) const { write_dem_checkpoint(file, checkpoint()); }
 
 void DemEngine::restore(const Hdf5File& file) {
   std::vector<MeshWall> meshes = std::move(meshes_);
@@ -764,7 +761,7 @@ RunReport DemEngine::performance() const {
       run_seconds_ > 0.0 ? (particle_steps_ - particle_steps_before_) / run_seconds_ : 0.0;
   r.add_figure("throughput", format("%.3g particle-steps/s", rate));
   r.add_figure("steps", format("%ld (dt %.4g s, t = %.4g s)", step_, time_step_.value, time_));
-  r.add_figure("particles", format("%zu", owned_count()));
+  r.add_figure("particles", format("%zu", global_count()));
   r.add_figure("neighbour pairs", format("%.2f per particle, %zu rebuilds",
                                          particles_.size() ? static_cast<double>(neighbours_.pair_count()) /
                                                                  static_cast<double>(particles_.size())
@@ -776,6 +773,15 @@ RunReport DemEngine::performance() const {
                                  "neighbours; %zu re-cuts)",
                                  settings_.ranks.size(), halo_.owned(), halo_.ghosts(),
                                  halo_.neighbour_ranks().size(), rebalances_));
+    const DemRanks& ranks = settings_.ranks;
+    const double own = static_cast<double>(halo_.owned());
+    double compute = 0.0;
+    for (const char* phase : {"pairs", "walls", "integration", "neighbours"})
+      compute += report_.phase_seconds(phase);
+    r.add_figure("balance", format("own particles %.0f-%.0f per rank; pairs, walls, integration "
+                                   "and neighbours %.3g-%.3g s per rank",
+                                   ranks.min(own), ranks.max(own), ranks.min(compute),
+                                   ranks.max(compute)));
     r.add_figure("sent per step", format("%.3g doubles (+ %.3g per step at rebuilds)",
                                          step_ > 0 ? halo_.step_doubles() / step_ : 0.0,
                                          step_ > 0 ? halo_.rebuild_doubles() / step_ : 0.0));

@@ -112,6 +112,13 @@ class DemEngine final : public Stepper {
   void write_checkpoint(const std::filesystem::path& path) const;
   void write_checkpoint(Hdf5File& file) const override;
   bool checkpoint_ready() const override { return prepared_ && !rebuild_due_; }
+  bool raised_on_any(bool flag) const override {
+    return shared() ? settings_.ranks.max(flag ? 1.0 : 0.0) > 0.0 : flag;
+  }
+  std::optional<std::string> agreed_failure(std::optional<std::string> mine) const override {
+    return settings_.ranks.agree_on_failure(mine);
+  }
+  bool writes_files() const override { return settings_.ranks.rank() == 0; }
   // The state of the checkpoint in `file`, in place of this engine's particles, analytic walls,
   // sink, neighbour list, step and time (the mesh walls added so far stay); prepare() then
   // checks the settings against it, as for the constructor from a checkpoint.

@@ -150,19 +150,3 @@ TEST_F(SweepRanks, AFailedPointIsRecordedAndTheSweepGoesOn) {
 }
 
 }  // namespace
-
-// `feedflow simulate` under mpirun with two ranks refuses (exit 2, naming mpirun and the way
-// to share runs) instead of running the scene twice into one folder.
-TEST_F(SweepRanks, SimulateUnderTwoRanksRefusesWithTheWayToShareRuns) {
-  const std::string command = "cd '" + dir_.string() + "' && " + std::string(FEEDFLOW_MPIEXEC) +
-                              " --oversubscribe --allow-run-as-root -np 2 '" FEEDFLOW_EXECUTABLE
-                              "' simulate '" + fs::current_path().string() +
-                              "/cases/pilot_hopper.toml' --solver dem --out s > s.out 2> s.err";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
-  const std::string err = slurp(dir_ / "s.err");
-  EXPECT_NE(err.find("mpirun"), std::string::npos) << err;
-  EXPECT_NE(err.find("feedflow sweep --rung"), std::string::npos) << err;
-  EXPECT_FALSE(fs::exists(dir_ / "s" / "results.json"));
-}

@@ -132,7 +132,7 @@ bool RainFill::advance(DemEngine& engine, double duration) {
   constexpr long kChunk = 200;
   if (!goal_) goal_ = engine.time() + engine.whole_steps(duration, StepRounding::up);
   while (!engine.reached(*goal_)) {
-    if (interrupt_requested() && engine.checkpoint_ready()) return false;
+    if (engine.raised_on_any(interrupt_requested()) && engine.checkpoint_ready()) return false;
     engine.advance_to(*goal_, kChunk);
   }
   goal_.reset();
@@ -174,7 +174,8 @@ bool RainFill::insert_batch(DemEngine& engine) {
   while (report.inserted_mass + sphere_mass_ <= due_mass * (1.0 + 1e-12) &&
          report.inserted_mass + 0.5 * sphere_mass_ < s.target_mass &&
          report.inserted_count < s.target_count) {
-    if (interrupt_requested()) return false;  // an atomic load, cheap beside the placement
+    // An atomic load, cheap beside the placement (shared among ranks, a sum over them).
+    if (engine.raised_on_any(interrupt_requested())) return false;
     bool placed = false;
     for (int a = 0; a < s.attempts && !placed; ++a) {
       Vec3 x;
