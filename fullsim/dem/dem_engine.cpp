@@ -773,15 +773,15 @@ RunReport DemEngine::performance() const {
                                  "neighbours; %zu re-cuts)",
                                  settings_.ranks.size(), halo_.owned(), halo_.ghosts(),
                                  halo_.neighbour_ranks().size(), rebalances_));
+    // The balance: min / mean / max over the ranks (each rank times the same phases).
     const DemRanks& ranks = settings_.ranks;
-    const double own = static_cast<double>(halo_.owned());
-    double compute = 0.0;
-    for (const char* phase : {"pairs", "walls", "integration", "neighbours"})
-      compute += report_.phase_seconds(phase);
-    r.add_figure("balance", format("own particles %.0f-%.0f per rank; pairs, walls, integration "
-                                   "and neighbours %.3g-%.3g s per rank",
-                                   ranks.min(own), ranks.max(own), ranks.min(compute),
-                                   ranks.max(compute)));
+    auto spread = [&](double mine, const char* unit) {
+      return format("%.4g / %.4g / %.4g%s (min / mean / max over the ranks)", ranks.min(mine),
+                    ranks.sum(mine) / ranks.size(), ranks.max(mine), unit);
+    };
+    r.add_figure("own particles", spread(static_cast<double>(halo_.owned()), ""));
+    for (const char* phase : {"pairs", "walls", "neighbours", "exchange"})
+      r.add_figure(std::string(phase) + " per rank", spread(report_.phase_seconds(phase), " s"));
     r.add_figure("sent per step", format("%.3g doubles (+ %.3g per step at rebuilds)",
                                          step_ > 0 ? halo_.step_doubles() / step_ : 0.0,
                                          step_ > 0 ? halo_.rebuild_doubles() / step_ : 0.0));
