@@ -752,6 +752,10 @@ std::string DemEngine::rank_balance() const {
   return out;
 }
 
+void DemEngine::add_earlier_phases(const RunReport& earlier) {
+  for (const auto& [phase, seconds] : earlier.phases()) report_.add_phase_time(phase, seconds);
+}
+
 RunReport DemEngine::performance() const {
   RunReport r = report_;
   r.set_wall_seconds(run_seconds_);

@@ -123,6 +123,9 @@ class DemEngine final : public Stepper {
   // sink, neighbour list, step and time (the mesh walls added so far stay); prepare() then
   // checks the settings against it, as for the constructor from a checkpoint.
   void restore(const Hdf5File& file) override;
+  // The phase times of an engine this one replaces (a scene that rebuilds its engine, as the
+  // drum does to start turning), so that this one's block covers both.
+  void add_earlier_phases(const RunReport& earlier);
   // Particle snapshots (particle_snapshots.hpp): particles.h5, or for a continued run
   // particles_from_step_<step>.h5 beside the first part's file.
   std::unique_ptr<SnapshotWriter> snapshot_writer(const std::filesystem::path& folder,

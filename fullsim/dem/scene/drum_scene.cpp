@@ -124,7 +124,9 @@ void DrumScene::start_rotation(std::ostream& log) {
   DemCheckpoint c = engine_->checkpoint();
   for (auto& w : c.walls)  // the end plates of the sealed drum turn with the shell
     w.moving(Vec3::Zero(), Vec3(0.0, spec_.speed, 0.0));
+  const RunReport filling = engine_->report();
   rebuild(std::move(c));
+  engine_->add_earlier_phases(filling);
   rotation_start_ = engine_->time();
   log << "drum: the shell turns at " << in_rpm(spec_.speed) << " rpm from t = "
       << rotation_start_ << " s\n";
