@@ -87,12 +87,11 @@ class DemChuteAdapter final : public SceneAdapter {
     run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
     run.sample = [this] {
       const DemEngine& e = scene_.engine();
-      const auto sink = e.merged_outlet_sink();
       return std::vector<double>{e.time(),
                                  e.time() - release_,
                                  e.kinetic_energy(),
                                  static_cast<double>(e.global_count()),
-                                 sink ? sink->removed_mass() : 0.0,
+                                 e.sunk().mass,
                                  scene_.deposit().front};
     };
     if (!request_.end_time)
@@ -118,11 +117,10 @@ class DemChuteAdapter final : public SceneAdapter {
                                   Rung::L3, "mm"});
     results.emplace_back("deposit_front", Estimate{d.front, "m", std::nullopt, std::nullopt,
                                                    "DEM: farthest bin with a particle", Rung::L3, ""});
-    const auto sink = e.merged_outlet_sink();
     results.emplace_back("particles_left", Estimate{static_cast<double>(e.global_count()), "", std::nullopt,
                                                     std::nullopt, "DEM scene", Rung::L3, ""});
     results.emplace_back("mass_off_ramp_end_per_width",
-                         Estimate{(sink ? sink->removed_mass() : 0.0) / scene_.spec().slab_depth, "kg/m", std::nullopt,
+                         Estimate{e.sunk().mass / scene_.spec().slab_depth, "kg/m", std::nullopt,
                                   std::nullopt, "DEM: slab mass through the ramp end / slab depth", Rung::L3, ""});
     results.emplace_back("run_wall_time", Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
                                                    "wall time of the flow phase", Rung::L3, ""});
@@ -132,7 +130,7 @@ class DemChuteAdapter final : public SceneAdapter {
       notes.push_back("the flow had not stopped within " + format_number(duration_, 3) + " s: the deposit is still moving");
     if (d.front < 0.5 * chute_.length)
       notes.push_back("the deposit ends at " + format_number(d.front, 3) + " m, before mid-ramp: h_stop at mid-ramp is 0");
-    if (!e.spring_warning().empty()) notes.push_back(e.spring_warning());
+    if (const std::string w = e.spring_warning(); !w.empty()) notes.push_back(w);
   }
 
   std::vector<std::string> reduced_model_quantities() const override {

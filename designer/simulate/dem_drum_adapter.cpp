@@ -176,7 +176,7 @@ class DemDrumAdapter final : public SceneAdapter {
       notes.push_back("the angle had not converged within " + format_number(duration_, 3) + " s of rotation");
     if (fills() && scene_.trimmed() == 0)
       notes.push_back("the settled packing fell short of the fill line: the bed is below the asked fill");
-    if (!scene_.engine().spring_warning().empty()) notes.push_back(scene_.engine().spring_warning());
+    if (const std::string w = scene_.engine().spring_warning(); !w.empty()) notes.push_back(w);
   }
 
   std::vector<std::string> reduced_model_quantities() const override {

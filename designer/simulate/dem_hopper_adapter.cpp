@@ -1,5 +1,7 @@
 #include "designer/simulate/dem_hopper_adapter.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -83,14 +85,11 @@ class DemHopperAdapter final : public SceneAdapter {
     run.sample = [this] {
       const DemEngine& e = *engine_;
       const double t_open = scene_.opening_time;
-      double out = 0.0;
-      const OutletSink sink = *e.merged_outlet_sink();
-      for (const auto& ev : sink.events())
-        if (ev.time > t_open) out += ev.mass;
-      const ParticleStore& bed = e.whole_bed();
+      const double out = e.sunk(t_open).mass;
+      const BedView bed = e.bed();
       flow_line_.add(e.time() - t_open, flow_line(bed));
-      return std::vector<double>{e.time(), e.time() - t_open, out, static_cast<double>(bed.size()),
-                                 bed.total_mass(), e.kinetic_energy()};
+      return std::vector<double>{e.time(), e.time() - t_open, out, bed.count(), bed.total_mass(),
+                                 e.kinetic_energy()};
     };
     discharge_.fill_mass = fill_mass();
     if (!request_.end_time)  // a given --time is run to its end
@@ -103,12 +102,12 @@ class DemHopperAdapter final : public SceneAdapter {
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
     const double scale = scene_.depth_scale();
-    const OutletSink sink = *engine_->merged_outlet_sink();
     const double t_open = scene_.opening_time;
-    const ParticleStore& bed = engine_->whole_bed();
-    log_mass_book(sink, bed);
-    const double discharged = sink.removed_mass() - scene_.fill.sunk_mass;
-    const double last = sink.events().empty() ? t_open : sink.events().back().time;
+    const BedView bed = engine_->bed();
+    const DemEngine::SunkTally sunk = engine_->sunk();
+    log_mass_book(sunk.mass, bed.total_mass());
+    const double discharged = sunk.mass - scene_.fill.sunk_mass;
+    const double last = engine_->sunk(t_open).last;
     DischargeWording w{Rung::L3, scale, slab_model(), "",
                        format("; arched: %.4g kg (scaled) left before the last exit at %.3g s after the opening",
                               discharged * scale, std::max(0.0, last - t_open)),
@@ -118,7 +117,7 @@ class DemHopperAdapter final : public SceneAdapter {
     if (rate.found)
       results.emplace_back("mass_flow_rate_slab", number(rate.rate, "kg/s", rate.low, rate.high,
                                                          "DEM slab as simulated (before the depth scaling)"));
-    const FlowOrder order = layer_order(sink, bed);
+    const FlowOrder order = layer_order(bed);
     results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
                                                 format("layer bands: pairs from different bands leaving in band order "
                                                        "(%d bands; %s by F >= %.2f)",
@@ -128,7 +127,7 @@ class DemHopperAdapter final : public SceneAdapter {
     results.emplace_back("simulated_time_after_opening",
                          number(engine_->time() - t_open, "s", std::nullopt, std::nullopt,
                                 run.end == RunEnd::stopped ? run.stop_reason : "the run's duration"));
-    if (!engine_->spring_warning().empty()) record.verdict.reasons.push_back(engine_->spring_warning());
+    if (const std::string w = engine_->spring_warning(); !w.empty()) record.verdict.reasons.push_back(w);
   }
 
   std::vector<std::string> reduced_model_quantities() const override {
@@ -186,22 +185,36 @@ class DemHopperAdapter final : public SceneAdapter {
     return *engine_;
   }
 
-  // The order of the bands: of the particles in the order they left, and of those left in
-  // the hopper.
-  FlowOrder layer_order(const OutletSink& sink, const ParticleStore& bed) const {
-    std::map<std::uint32_t, int> band_of;
-    for (std::size_t k = 0; k < scene_.initial_ids.size(); ++k)
-      band_of[scene_.initial_ids[k]] = static_cast<int>(scene_.initial_layers[k]);
-    std::vector<int> out_bands, left_bands;
+  // The order of the bands (each particle's layer, set at the trim): of the particles in the
+  // order they left (the sink's books, merged once), and of those left in the hopper (counts
+  // per band, summed over the ranks).
+  FlowOrder layer_order(const BedView& bed) const {
+    std::vector<int> out_bands;
+    const OutletSink sink = *engine_->merged_outlet_sink();
     for (const auto& ev : sink.events())
-      if (ev.time > scene_.opening_time && band_of.count(ev.id)) out_bands.push_back(band_of[ev.id]);
-    for (std::uint32_t id : bed.id)
-      if (band_of.count(id)) left_bands.push_back(band_of[id]);
-    return flow_order(out_bands, left_bands);
+      if (ev.time > scene_.opening_time && std::isfinite(ev.layer))
+        out_bands.push_back(static_cast<int>(ev.layer));
+    const ParticleStore& p = bed.store();
+    double low = std::numeric_limits<double>::infinity(), high = -low;  // the bands present
+    for (std::size_t k = 0; k < bed.own(); ++k) {
+      low = std::min(low, p.layer[k]);
+      high = std::max(high, p.layer[k]);
+    }
+    low = -bed.max(-low);
+    high = bed.max(high);
+    std::map<int, double> left_bands;
+    if (low <= high) {
+      std::vector<double> left(static_cast<std::size_t>(high - low) + 1, 0.0);
+      for (std::size_t k = 0; k < bed.own(); ++k) left[static_cast<std::size_t>(p.layer[k] - low)] += 1.0;
+      bed.sum(left);
+      for (std::size_t b = 0; b < left.size(); ++b)
+        if (left[b] > 0.0) left_bands[static_cast<int>(low) + static_cast<int>(b)] = left[b];
+    }
+    return flow_order_by_counts(out_bands, left_bands);
   }
 
-  // The particle speeds along the flow-pattern line now (of the whole bed).
-  SpeedProfile flow_line(const ParticleStore& bed) const {
+  // The particle speeds along the flow-pattern line now (of every rank's particles).
+  SpeedProfile flow_line(const BedView& bed) const {
     const double r = scene_.slab.radius;
     return speed_profile(bed, 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
   }
@@ -219,13 +232,12 @@ class DemHopperAdapter final : public SceneAdapter {
                   scene_.slab.depth * 1e3, scene_.depth_scale(), scene_.slot_length);
   }
 
-  void log_mass_book(const OutletSink& sink, const ParticleStore& bed) const {
+  void log_mass_book(double sunk, double in_domain) const {
     if (!request_.log) return;
-    const double in_domain = bed.total_mass();
-    const double booked = in_domain + sink.removed_mass() + scene_.fill.trimmed_mass;
+    const double booked = in_domain + sunk + scene_.fill.trimmed_mass;
     *request_.log << format("mass book: inserted %.9g kg = in the domain %.9g kg + through the sink %.9g kg + "
                             "trimmed %.9g kg (difference %.3g kg)\n",
-                            scene_.fill.inserted_mass, in_domain, sink.removed_mass(), scene_.fill.trimmed_mass,
+                            scene_.fill.inserted_mass, in_domain, sunk, scene_.fill.trimmed_mass,
                             booked - scene_.fill.inserted_mass);
   }
 

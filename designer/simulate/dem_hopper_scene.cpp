@@ -30,7 +30,23 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
   return s;
 }
 
+namespace {
+
+constexpr const char* kSceneName = "DEM wedge hopper slab";
+
+bool is_hopper_checkpoint(const Hdf5File& f) {
+  if (f.exists("/scene/initial_ids")) return true;  // written before the scene was named
+  try {
+    return f.string_attribute("/scene", "scene") == kSceneName;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
+  f.set_attribute("/scene", "scene", std::string(kSceneName));
   f.set_attribute("/scene", "opening_time", s.opening_time);
   f.set_attribute("/scene", "opening_step", static_cast<std::int64_t>(s.opening_step));
   f.set_attribute("/scene", "inserted_mass", s.fill.inserted_mass);
@@ -42,12 +58,10 @@ void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
   f.set_attribute("/scene", "settled", static_cast<std::int64_t>(s.fill.settled));
   f.set_attribute("/scene", "slab_depth", s.slab.depth);
   f.set_attribute("/scene", "slab_faces", std::string(to_string(s.slab.built_faces())));
-  f.write("/scene/initial_ids", s.initial_ids, {s.initial_ids.size()}, "");
-  f.write("/scene/initial_layers", s.initial_layers, {s.initial_layers.size()}, "");
 }
 
 void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
-  if (!f.exists("/scene/initial_ids"))
+  if (!is_hopper_checkpoint(f))
     throw InputError("--restart", "", f.path().string() + " is not a checkpoint of a DEM hopper scene");
   if (f.double_attribute("/scene", "slab_depth") != s.slab.depth)
     throw InputError("--restart", "", "the checkpoint's slab depth differs from the case's [dem] slab_depth");
@@ -66,8 +80,6 @@ void restore_hopper_scene(DemHopperScene& s, const Hdf5File& f) {
   s.fill.sunk_count = static_cast<std::size_t>(f.integer_attribute("/scene", "sunk_count"));
   s.fill.settled = f.integer_attribute("/scene", "settled") != 0;
   s.fill.target_reached = true;
-  s.initial_ids = f.read<std::uint32_t>("/scene/initial_ids");
-  s.initial_layers = f.read<double>("/scene/initial_layers");
 }
 
 void describe_hopper_scene(const DemHopperScene& s, std::ostream& log) {
@@ -102,12 +114,11 @@ bool fill_hopper_scene(DemHopperScene& s, DemEngine& engine, ProgressSink* progr
   s.opening_time = engine.time();
   s.opening_step = engine.step();
   engine.set_wall_removal_time("gate", s.opening_time);
-  const ParticleStore& p = engine.whole_bed();
-  s.initial_ids = p.id;
-  s.initial_layers = p.layer;
+  // (each particle keeps its band in its layer, and the sink books it with the particle)
+  const BedView bed = engine.bed();
   char line[200];
-  std::snprintf(line, sizeof line, "  gate removed at t = %.4g s (step %ld), %zu particles, %.6g kg in the slab\n",
-                s.opening_time, s.opening_step, p.size(), p.total_mass());
+  std::snprintf(line, sizeof line, "  gate removed at t = %.4g s (step %ld), %.0f particles, %.6g kg in the slab\n",
+                s.opening_time, s.opening_step, bed.count(), bed.total_mass());
   log << line;
   return true;
 }

@@ -30,8 +30,6 @@ struct DemHopperScene {
   long opening_step = 0;
   FillReport fill;             // counts and masses of the fill (a restored run: those saved)
   std::optional<RainFill> rain_fill;  // the fill under way (stopped by Ctrl-C) or done
-  std::vector<std::uint32_t> initial_ids;  // at the opening, with their bands
-  std::vector<double> initial_layers;
 
   double depth_scale() const { return slot_length / slab.depth; }  // slab -> real depth
 };

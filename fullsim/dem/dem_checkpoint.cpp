@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "fullsim/common/hdf5_file.hpp"
@@ -124,16 +125,18 @@ void write_contents(Hdf5File& f, const DemCheckpoint& c) {
     set_quantity(f, "/outlet_sink", "removed_mass", s.removed_mass(), "kg");
     write_vec3(f, "/outlet_sink/lower_or_point", s.lower_or_point(), "m");
     write_vec3(f, "/outlet_sink/upper_or_outward", s.upper_or_outward(), s.is_box() ? "m" : "1");
-    std::vector<double> t, m;
+    std::vector<double> t, m, layer;
     std::vector<std::uint32_t> id;
     for (const auto& e : s.events()) {
       t.push_back(e.time);
       id.push_back(e.id);
       m.push_back(e.mass);
+      layer.push_back(e.layer);
     }
     f.write("/outlet_sink/event_time", t, {t.size()}, "s");
     f.write("/outlet_sink/event_id", id, {id.size()}, "1");
     f.write("/outlet_sink/event_mass", m, {m.size()}, "kg");
+    f.write("/outlet_sink/event_layer", layer, {layer.size()}, "1");
   }
 
   f.create_group("/guard");
@@ -257,8 +260,12 @@ DemCheckpoint read_contents(const Hdf5File& f) {
     const auto t = f.read<double>("/outlet_sink/event_time");
     const auto id = f.read<std::uint32_t>("/outlet_sink/event_id", {t.size()});
     const auto m = f.read<double>("/outlet_sink/event_mass", {t.size()});
+    // (a checkpoint written before the layers were booked: NaN, unknown)
+    const auto layer = f.exists("/outlet_sink/event_layer")
+                           ? f.read<double>("/outlet_sink/event_layer", {t.size()})
+                           : std::vector<double>(t.size(), std::numeric_limits<double>::quiet_NaN());
     std::vector<SinkEvent> events(t.size());
-    for (std::size_t k = 0; k < t.size(); ++k) events[k] = {t[k], id[k], m[k]};
+    for (std::size_t k = 0; k < t.size(); ++k) events[k] = {t[k], id[k], m[k], layer[k]};
     c.sink = OutletSink::restored(shape == "box", read_vec3(f, "/outlet_sink/lower_or_point"),
                                   read_vec3(f, "/outlet_sink/upper_or_outward"),
                                   f.double_attribute("/outlet_sink", "removed_mass"),

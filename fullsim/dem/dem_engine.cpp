@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "fullsim/dem/morton_order.hpp"
-#include "fullsim/dem/ranks/gathered_particles.hpp"
 #include "fullsim/dem/ranks/merged_sink.hpp"
 #include "models/core/errors.hpp"
 
@@ -25,15 +24,6 @@ std::string format(const char* fmt, auto... args) {
   char buf[700];
   std::snprintf(buf, sizeof buf, fmt, args...);
   return buf;
-}
-
-// Kinetic energy of translation and rotation of the first n slots [J].
-double kinetic_energy_of(const ParticleStore& p, std::size_t n) {
-  double e = 0.0;
-  for (std::size_t k = 0; k < n; ++k)
-    e += 0.5 * p.mass[k] * p.velocity[k].squaredNorm() +
-         0.5 * p.inertia[k] * p.angular_velocity[k].squaredNorm();
-  return e;
 }
 
 }  // namespace
@@ -326,15 +316,40 @@ std::optional<OutletSink> DemEngine::merged_outlet_sink() const {
   return merge_sink_books(*sink_, settings_.ranks);
 }
 
+DemEngine::SunkTally DemEngine::sunk(double since) const {
+  std::vector<double> tally{0.0, 0.0};
+  double last = since;
+  if (sink_ && since == -std::numeric_limits<double>::infinity())
+    tally = {sink_->removed_mass(), static_cast<double>(sink_->removed_count())};
+  else if (sink_)
+    for (const SinkEvent& e : sink_->events())
+      if (e.time > since) {
+        tally[0] += e.mass;
+        tally[1] += 1.0;
+      }
+  if (sink_ && !sink_->events().empty()) last = std::max(last, sink_->events().back().time);
+  if (shared()) {
+    settings_.ranks.sum(tally);
+    last = settings_.ranks.max(last);
+  }
+  return {tally[0], tally[1], last};
+}
+
 std::size_t DemEngine::global_count() const {
   if (!distributed()) return particles_.size();
   return static_cast<std::size_t>(settings_.ranks.sum(static_cast<double>(owned_count())));
 }
 
-const ParticleStore& DemEngine::whole_bed() const {
-  if (!distributed()) return particles_;
-  whole_bed_ = all_gather_particles(particles_, owned_count(), settings_.ranks);
-  return whole_bed_;
+std::string DemEngine::spring_warning() const {
+  if (!shared()) return spring_warning_;
+  const auto agreed = settings_.ranks.agree_on_failure(
+      spring_warning_.empty() ? std::nullopt : std::optional<std::string>(spring_warning_));
+  return agreed.value_or(std::string());
+}
+
+BedView DemEngine::bed() const {
+  return distributed() ? BedView(particles_, owned_count(), settings_.ranks)
+                       : BedView(particles_, particles_.size(), DemRanks::one());
 }
 
 void DemEngine::rebuild_neighbours() {
@@ -565,7 +580,7 @@ double DemEngine::max_speed() const {
 }
 
 double DemEngine::kinetic_energy() const {
-  const double mine = kinetic_energy_of(particles_, owned_count());
+  const double mine = particles_.kinetic_energy(owned_count());
   return distributed() ? settings_.ranks.sum(mine) : mine;
 }
 

@@ -13,6 +13,7 @@
 //   engine.run_steps(10000);         // or advance_to(t)
 //   log << engine.performance_report();
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -22,6 +23,7 @@
 #include "fullsim/common/run_report.hpp"
 #include "fullsim/common/scene_outline.hpp"
 #include "fullsim/common/stepper.hpp"
+#include "fullsim/dem/bed_view.hpp"
 #include "fullsim/dem/blow_up_guard.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 #include "fullsim/dem/force_kernel.hpp"
@@ -151,10 +153,10 @@ class DemEngine final : public Stepper {
   std::size_t owned_count() const { return distributed() ? halo_.owned() : particles_.size(); }
   // The particles of every rank (collective on a shared run).
   std::size_t global_count() const;
-  // Every rank's own particles in one store, what a scene measures: on a shared run each rank
-  // gets them all, in rank order (collective; valid until the next call or step); alone, or
-  // before the run is shared out, the store itself.
-  const ParticleStore& whole_bed() const;
+  // What a scene measures: this rank's own particles and the reductions over every rank's
+  // (bed_view.hpp); alone, or before the run is shared out (every rank holding every
+  // particle), the store itself with local reductions.
+  BedView bed() const;
   const RankDomains& rank_domains() const { return domains_; }
   const HaloExchange& halo() const { return halo_; }
   const NeighbourList& neighbours() const { return neighbours_; }
@@ -170,14 +172,23 @@ class DemEngine final : public Stepper {
   // The sink with every rank's books merged: the whole run's discharge (collective on a
   // shared run; alone, a copy of the sink); none without a sink.
   std::optional<OutletSink> merged_outlet_sink() const;
+  // What the sink took after time `since`, of every rank (collective on a shared run); zero
+  // without a sink. The books' sums, for a scene that needs no single event.
+  struct SunkTally {
+    double mass = 0.0;   // [kg]
+    double count = 0.0;
+    double last = 0.0;   // the time of the last one taken; `since` when none [s]
+  };
+  SunkTally sunk(double since = -std::numeric_limits<double>::infinity()) const;
   const SimulationBox& box() const { return box_; }
   const RunReport& report() const { return report_; }
   // Of every rank's own particles (collective on a shared run).
   double kinetic_energy() const;
   double max_speed() const;
   // The warning raised (once) when a contact grew stiffer than the time step allows with its
-  // safety factor; empty if none. The engine prints nothing: the scene reports it.
-  const std::string& spring_warning() const { return spring_warning_; }
+  // safety factor; empty if none. The engine prints nothing: the scene reports it. On a shared
+  // run, the first rank's that raised one, naming that rank (collective).
+  std::string spring_warning() const;
   // The particle-steps run so far.
   double particle_steps() const { return particle_steps_; }
 
@@ -238,7 +249,6 @@ class DemEngine final : public Stepper {
   std::string spring_warning_;
   RankDomains domains_;
   HaloExchange halo_;
-  mutable ParticleStore whole_bed_;  // whole_bed()'s gathered store on a shared run
   std::size_t rebalances_ = 0;
 };
 

@@ -46,7 +46,7 @@ std::size_t OutletSink::remove(ParticleStore& particles, double t) {
     flagged[k] = 1;
     ++count;
     removed_mass_ += particles.mass[k];
-    events_.push_back({t, particles.id[k], particles.mass[k]});
+    events_.push_back({t, particles.id[k], particles.mass[k], particles.layer[k]});
   }
   // Booked in id order within one removal, so the books do not depend on the store's order
   // (which the neighbour sort and the ranks change).

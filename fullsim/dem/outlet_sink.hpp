@@ -14,6 +14,7 @@ struct SinkEvent {
   double time = 0.0;         // [s]
   std::uint32_t id = 0;
   double mass = 0.0;         // [kg]
+  double layer = 0.0;        // the particle's layer (ParticleStore::layer), e.g. its fill band
 };
 
 class OutletSink {

@@ -102,15 +102,15 @@ void ParticleStore::resize(std::size_t n) {
   wall_history.resize(n * wall_stride_, 0.0);
 }
 
-double ParticleStore::total_mass() const {
+double ParticleStore::total_mass(std::size_t n) const {
   double m = 0.0;
-  for (double mi : mass) m += mi;
+  for (std::size_t k = 0; k < std::min(n, size()); ++k) m += mass[k];
   return m;
 }
 
-double ParticleStore::kinetic_energy() const {
+double ParticleStore::kinetic_energy(std::size_t n) const {
   double e = 0.0;
-  for (std::size_t k = 0; k < size(); ++k)
+  for (std::size_t k = 0; k < std::min(n, size()); ++k)
     e += 0.5 * mass[k] * velocity[k].squaredNorm() +
          0.5 * inertia[k] * angular_velocity[k].squaredNorm();
   return e;

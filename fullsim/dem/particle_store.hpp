@@ -51,8 +51,10 @@ class ParticleStore {
   // dropped this way behind its own particles).
   void resize(std::size_t n);
 
-  double total_mass() const;
-  double kinetic_energy() const;  // translation and rotation [J]
+  // Of the first n slots (all by default: a rank's own particles are its first slots).
+  double total_mass(std::size_t n = npos) const;
+  double kinetic_energy(std::size_t n = npos) const;  // translation and rotation [J]
+  static constexpr std::size_t npos = static_cast<std::size_t>(-1);
   double max_radius() const;
 
  private:

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "fullsim/dem/ranks/gathered_particles.hpp"
 #include "fullsim/dem/scene/drum_angle_watch.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
 #include "fullsim/dem/scene/wedge_hopper_slab.hpp"
@@ -47,7 +48,7 @@ HopperRun fill_and_discharge(const DemRanks& ranks) {
   run.fill = rain_fill(e, rain, log);
   e.set_wall_removal_time("gate", e.time());
   e.advance_to(e.time() + 0.25);
-  const ParticleStore& bed = e.whole_bed();
+  const ParticleStore bed = all_gather_particles(e.particles(), e.owned_count(), ranks);
   const OutletSink sink = *e.merged_outlet_sink();
   run.in_domain = bed.size();
   run.sunk = sink.removed_count();

@@ -45,6 +45,39 @@ double DemRanks::min(double value) const {
   return value;
 }
 
+namespace {
+
+// MPI's reduction of two sets of per-bin lists (a bin's list is the datatype: k doubles in
+// descending order): `inout` gets the k largest of both.
+void merge_highest(void* in, void* inout, int* bins, MPI_Datatype* list) {
+  int bytes = 0;
+  MPI_Type_size(*list, &bytes);
+  const std::size_t k = static_cast<std::size_t>(bytes) / sizeof(double);
+  const double* a = static_cast<const double*>(in);
+  double* b = static_cast<double*>(inout);
+  std::vector<double> merged(k);
+  for (int bin = 0; bin < *bins; ++bin, a += k, b += k) {
+    std::size_t i = 0, j = 0;
+    for (double& m : merged) m = (j == k || (i < k && a[i] >= b[j])) ? a[i++] : b[j++];
+    std::copy(merged.begin(), merged.end(), b);
+  }
+}
+
+}  // namespace
+
+void DemRanks::highest(std::vector<double>& tops, std::size_t k) const {
+  if (!mpi_ || k == 0 || tops.empty()) return;
+  MPI_Datatype list;
+  MPI_Type_contiguous(static_cast<int>(k), MPI_DOUBLE, &list);
+  MPI_Type_commit(&list);
+  MPI_Op op;
+  MPI_Op_create(&merge_highest, 1, &op);
+  MPI_Allreduce(MPI_IN_PLACE, tops.data(), static_cast<int>(tops.size() / k), list, op,
+                MPI_COMM_WORLD);
+  MPI_Op_free(&op);
+  MPI_Type_free(&list);
+}
+
 void DemRanks::exchange_into(const std::vector<int>& ranks,
                              const std::vector<std::vector<double>>& send,
                              std::vector<std::vector<double>>& recv, int tag) const {

@@ -29,6 +29,10 @@ class DemRanks {
   double sum(double value) const;
   double max(double value) const;
   double min(double value) const;
+  // Per bin, the `k` largest values over the ranks: `tops` holds the bins' lists end to end,
+  // k values each in descending order, padded with -infinity; on return each list is the k
+  // largest of every rank's lists for that bin (exact: a merge, no arithmetic).
+  void highest(std::vector<double>& tops, std::size_t k) const;
 
   // Sends send[k] to ranks[k] and returns what each of them sent back, in the order of `ranks`
   // (every rank of the list must list this one: the exchange is symmetric). Messages are tagged

@@ -7,9 +7,11 @@
 namespace feedflow {
 namespace {
 
-std::vector<double> own_records(const ParticleStore& p, std::size_t owned) {
+std::vector<double> own_records(const ParticleStore& p, std::size_t owned,
+                                const std::function<bool(std::size_t)>& select = {}) {
   std::vector<double> mine;
-  for (std::size_t k = 0; k < owned; ++k) put_particle(mine, p, k);
+  for (std::size_t k = 0; k < owned; ++k)
+    if (!select || select(k)) put_particle(mine, p, k);
   return mine;
 }
 
@@ -33,6 +35,11 @@ ParticleStore gather_particles(const ParticleStore& p, std::size_t owned, const 
 ParticleStore all_gather_particles(const ParticleStore& p, std::size_t owned,
                                    const DemRanks& ranks) {
   return store_of(ranks.all_gather(own_records(p, owned)), p);
+}
+
+ParticleStore all_gather_particles(const ParticleStore& p, std::size_t owned, const DemRanks& ranks,
+                                   const std::function<bool(std::size_t)>& select) {
+  return store_of(ranks.all_gather(own_records(p, owned, select)), p);
 }
 
 }  // namespace feedflow

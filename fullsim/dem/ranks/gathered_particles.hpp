@@ -3,6 +3,7 @@
 // order, each whole (particle_record.hpp). On the first rank for snapshots; on every rank for
 // what a scene measures.
 #include <cstddef>
+#include <functional>
 
 #include "fullsim/dem/particle_store.hpp"
 #include "fullsim/dem/ranks/dem_ranks.hpp"
@@ -16,5 +17,9 @@ ParticleStore gather_particles(const ParticleStore& p, std::size_t owned, const 
 // As gather_particles, every rank getting every particle.
 ParticleStore all_gather_particles(const ParticleStore& p, std::size_t owned,
                                    const DemRanks& ranks);
+
+// As all_gather_particles, of the own particles whose slot `select` accepts.
+ParticleStore all_gather_particles(const ParticleStore& p, std::size_t owned, const DemRanks& ranks,
+                                   const std::function<bool(std::size_t)>& select);
 
 }  // namespace feedflow

@@ -7,16 +7,16 @@
 namespace feedflow {
 
 OutletSink merge_sink_books(const OutletSink& mine, const DemRanks& ranks) {
-  // Removed mass, then (time, id, mass) per event.
+  // Removed mass, then (time, id, mass, layer) per event.
   std::vector<double> books{mine.removed_mass()};
   for (const SinkEvent& e : mine.events())
-    books.insert(books.end(), {e.time, static_cast<double>(e.id), e.mass});
+    books.insert(books.end(), {e.time, static_cast<double>(e.id), e.mass, e.layer});
   double removed_mass = 0.0;
   std::vector<SinkEvent> events;
   for (const std::vector<double>& from : ranks.all_gather(books)) {
     removed_mass += from[0];
-    for (std::size_t k = 1; k + 3 <= from.size(); k += 3)
-      events.push_back({from[k], static_cast<std::uint32_t>(from[k + 1]), from[k + 2]});
+    for (std::size_t k = 1; k + 4 <= from.size(); k += 4)
+      events.push_back({from[k], static_cast<std::uint32_t>(from[k + 1]), from[k + 2], from[k + 3]});
   }
   std::sort(events.begin(), events.end(), [](const SinkEvent& a, const SinkEvent& b) {
     return a.time != b.time ? a.time < b.time : a.id < b.id;

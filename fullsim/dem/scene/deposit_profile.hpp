@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fullsim/common/deposit_measurement.hpp"
-#include "fullsim/dem/particle_store.hpp"
+#include "fullsim/dem/bed_view.hpp"
 
 namespace feedflow {
 
@@ -19,8 +19,9 @@ struct DepositProfile {
 };
 
 // Positions in the ramp frame: x along the slope from the gate, z normal to the ramp; the ramp
-// surface at z = `surface`. Bins of `bin_width` over [0, ramp_length].
-DepositProfile measure_deposit(const ParticleStore& particles, double ramp_length, double surface,
+// surface at z = `surface`. Bins of `bin_width` over [0, ramp_length]. Of every rank's particles
+// (collective on a shared run).
+DepositProfile measure_deposit(const BedView& bed, double ramp_length, double surface,
                                double bin_width);
 
 }  // namespace feedflow

@@ -11,6 +11,7 @@
 // line, over the drum radius: ~0 for the flat surface of rolling, large for the S- or kidney-
 // shaped surface of cascading.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace feedflow {
@@ -30,10 +31,31 @@ struct DrumSurfaceFit {
   std::size_t points = 0;      // surface points in the central fit
 };
 
+// The tops of the bed's columns, what the surface points are found from: per column its
+// particle count and its `depth` highest centres in descending order, padded with -infinity.
+// Columns of several ranks' particles merge by summing the counts and keeping the highest
+// `depth` of the lists (BedView::highest); the surface found from the merged tops is that of
+// the whole bed.
+struct ColumnTops {
+  std::size_t depth = 0;
+  std::vector<double> count;  // per column
+  std::vector<double> z;      // per column, `depth` values [m]
+};
+ColumnTops column_tops(const std::vector<SurfacePoint>& particles, double particle_radius,
+                       double drum_radius, std::size_t depth);
+
+// The surface points of the columns. `undetermined` gets the number of columns whose list is
+// too short to tell (more particles than the list holds, and no surface point in it); they
+// give no point, and deeper lists settle them.
+std::vector<SurfacePoint> surface_points(const ColumnTops& tops, double particle_radius,
+                                         double drum_radius, std::size_t& undetermined);
+
 // The surface points of a bed given as cross-section positions (x, z) of particles of
-// `particle_radius` in a drum of `drum_radius`.
+// `particle_radius` in a drum of `drum_radius`: from lists 16 deep, deepened until every column
+// is told. `merge` makes the whole bed's tops of this rank's (none alone; collective).
 std::vector<SurfacePoint> bed_surface_points(const std::vector<SurfacePoint>& particles,
-                                             double particle_radius, double drum_radius);
+                                             double particle_radius, double drum_radius,
+                                             const std::function<void(ColumnTops&)>& merge = {});
 
 // The fit over the central `central_fraction` of the chord (0.6: the middle 60 %).
 DrumSurfaceFit fit_drum_surface(const std::vector<SurfacePoint>& surface, double drum_radius,

@@ -133,46 +133,55 @@ void DrumScene::start_rotation(std::ostream& log) {
 }
 
 DrumSample DrumScene::sample() const {
-  const ParticleStore& p = engine_->whole_bed();
+  // Each rank measures its own particles; sums, and the merged tops of the bed's columns, make
+  // the whole bed's sample on every rank.
+  const BedView bed = engine_->bed();
+  const ParticleStore& p = bed.store();
+  const std::size_t own = bed.own();
   const double r = settings_.material.particle.radius;
   const double R = 0.5 * spec_.diameter;
   const double omega = spec_.speed;
   DrumSample s;
   s.time = engine_->time() - rotation_start_;
-  s.kinetic_energy = p.kinetic_energy();
-  const std::size_t n = p.size();
-  if (n == 0) return s;
-  std::vector<SurfacePoint> section(n);
-  for (std::size_t i = 0; i < n; ++i) section[i] = {p.position[i].x(), p.position[i].z()};
-  s.surface = bed_surface_points(section, r, R);
+  s.kinetic_energy = bed.kinetic_energy();
+  const double count = bed.count();
+  if (count == 0.0) return s;
+  std::vector<SurfacePoint> section(own);
+  for (std::size_t i = 0; i < own; ++i) section[i] = {p.position[i].x(), p.position[i].z()};
+  s.surface = bed_surface_points(section, r, R, [&bed](ColumnTops& tops) {
+    bed.highest(tops.z, tops.depth);
+    bed.sum(tops.count);
+  });
   const DrumSurfaceFit fit = fit_drum_surface(s.surface, R);
   s.valid = fit.valid;
   // The shell carries the bed towards -x for omega > 0 (bottom moving at -omega R x).
   s.angle = omega >= 0.0 ? -fit.slope_angle : fit.slope_angle;
   s.state.surface_bulge = fit.bulge;
   const double slope = std::tan(fit.slope_angle);
-  std::size_t airborne = 0, over_top = 0, solid = 0, shell = 0;
-  double shell_speed = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  // airborne, over the top, moving with the shell, beside the shell, their speed along it
+  std::vector<double> tally(5, 0.0);
+  for (std::size_t i = 0; i < own; ++i) {
     const Vec3& x = p.position[i];
     const Vec3& v = p.velocity[i];
     const double radial = std::hypot(x.x(), x.z());
-    if (fit.valid && radial < R - 2.0 * r && x.z() > fit.intercept + slope * x.x() + 3.0 * r) ++airborne;
-    if (x.z() > 0.8 * R) ++over_top;
+    if (fit.valid && radial < R - 2.0 * r && x.z() > fit.intercept + slope * x.x() + 3.0 * r) ++tally[0];
+    if (x.z() > 0.8 * R) ++tally[1];
     const Vec3 rigid(omega * x.z(), 0.0, -omega * x.x());  // omega y-hat x r
-    if ((v - rigid).norm() < 0.1 * std::abs(omega) * R) ++solid;
+    if ((v - rigid).norm() < 0.1 * std::abs(omega) * R) ++tally[2];
     if (radial > R - 1.5 * r && radial > 0.0) {
-      ++shell;
-      shell_speed += (v.x() * x.z() - v.z() * x.x()) / radial;  // along omega y-hat x r-hat
+      ++tally[3];
+      tally[4] += (v.x() * x.z() - v.z() * x.x()) / radial;  // along omega y-hat x r-hat
     }
   }
-  const double count = static_cast<double>(n);
+  bed.sum(tally);
+  const double airborne = tally[0], over_top = tally[1], solid = tally[2], shell = tally[3],
+               shell_speed = tally[4];
   s.state.particles = count;
   s.state.airborne_fraction = airborne / count;
   s.state.over_top_fraction = over_top / count;
   s.state.solid_body_fraction = omega != 0.0 ? solid / count : 0.0;
   s.state.shell_speed_ratio =
-      shell > 0 && omega != 0.0 ? shell_speed / static_cast<double>(shell) / (omega * R) : 1.0;
+      shell > 0 && omega != 0.0 ? shell_speed / shell / (omega * R) : 1.0;
   return s;
 }
 

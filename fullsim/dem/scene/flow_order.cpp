@@ -6,6 +6,13 @@ namespace feedflow {
 
 FlowOrder flow_order(const std::vector<int>& discharged, const std::vector<int>& remaining,
                      double threshold) {
+  std::map<int, double> rest;
+  for (int band : remaining) rest[band] += 1.0;
+  return flow_order_by_counts(discharged, rest, threshold);
+}
+
+FlowOrder flow_order_by_counts(const std::vector<int>& discharged, const std::map<int, double>& rest,
+                               double threshold) {
   // Walk the exits in order: each particle leaving now forms a pair with every particle that
   // left before it; the pair is in order when the earlier one's band is lower. Counts per band
   // make this O(N log B).
@@ -26,8 +33,6 @@ FlowOrder flow_order(const std::vector<int>& discharged, const std::vector<int>&
     left_before[band] += 1.0;
     total_before += 1.0;
   }
-  std::map<int, double> rest;
-  for (int band : remaining) rest[band] += 1.0;
   for (const auto& [band, count] : rest) add_pairs(band, count);
   FlowOrder f;
   f.pairs = pairs;

@@ -9,6 +9,7 @@
 // along the walls (F near 1/2 or below). Mass flow when F >= 0.8 (at least four pairs in five
 // in order), funnel flow otherwise; the index is reported with the label.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,8 @@ constexpr double kMassFlowFifoIndex = 0.8;
 // `remaining_bands`: the bands of the particles still in the domain. Bands are integers.
 FlowOrder flow_order(const std::vector<int>& discharged_bands, const std::vector<int>& remaining_bands,
                      double threshold = kMassFlowFifoIndex);
+// The same with the particles still in the domain counted per band.
+FlowOrder flow_order_by_counts(const std::vector<int>& discharged_bands, const std::map<int, double>& remaining_counts,
+                               double threshold = kMassFlowFifoIndex);
 
 }  // namespace feedflow

@@ -59,30 +59,24 @@ void check(const RainFillSettings& s) {
 }
 
 // The largest speed among the particles the trim will keep (those above roll on the heap top
-// and are removed anyway).
-double kept_max_speed(const ParticleStore& p, const std::optional<double>& trim_height) {
+// and are removed anyway), of every rank's.
+double kept_max_speed(const BedView& bed, const std::optional<double>& trim_height) {
+  const ParticleStore& p = bed.store();
   double v2 = 0.0;
-  for (std::size_t k = 0; k < p.size(); ++k)
+  for (std::size_t k = 0; k < bed.own(); ++k)
     if (!trim_height || p.position[k].z() <= *trim_height) v2 = std::max(v2, p.velocity[k].squaredNorm());
-  return std::sqrt(v2);
+  return std::sqrt(bed.max(v2));
 }
 
 }  // namespace
 
-double resting_fill_top(const ParticleStore& p, double resting_speed) {
+double resting_fill_top(const BedView& bed, double resting_speed) {
+  const ParticleStore& p = bed.store();
   double top = -std::numeric_limits<double>::infinity();
   const double v2 = resting_speed * resting_speed;
-  for (std::size_t k = 0; k < p.size(); ++k)
+  for (std::size_t k = 0; k < bed.own(); ++k)
     if (p.velocity[k].squaredNorm() < v2) top = std::max(top, p.position[k].z());
-  return top;
-}
-
-bool overlaps_anything(const DemEngine& engine, const Vec3& x, double radius) {
-  const ParticleStore& bed = engine.whole_bed();
-  std::vector<std::size_t> all(bed.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  return touches_particle(bed, engine.box(), all, x, radius) ||
-         touches_wall(engine, x, radius);
+  return bed.max(top);
 }
 
 std::string RainFillSettings::describe() const {
@@ -149,21 +143,22 @@ bool RainFill::insert_batch(DemEngine& engine) {
   if (!batch_lower_z_) {
     batch_lower_z_ = s.region_lower.z();
     if (s.follow_gap > 0.0) {
-      const double top = resting_fill_top(engine.whole_bed(), s.resting_speed);
+      const double top = resting_fill_top(engine.bed(), s.resting_speed);
       if (std::isfinite(top)) batch_lower_z_ = std::max(*batch_lower_z_, top + s.follow_gap);
     }
   }
   Vec3 lower = s.region_lower;
   lower.z() = *batch_lower_z_;
-  // Particles that can touch a sphere placed in the region (on a run shared among ranks every
-  // rank sees them all and places the same spheres).
-  const ParticleStore& p = engine.whole_bed();
-  std::vector<std::size_t> near;
-  const double reach = s.radius + p.max_radius();
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const double z = p.position[k].z();
-    if (z > lower.z() - reach && z < lower.z() + extent.z() + reach) near.push_back(k);
-  }
+  // Particles that can touch a sphere placed in the region, of every rank (so on a run shared
+  // among ranks every rank places the same spheres).
+  const BedView bed = engine.bed();
+  const double reach = s.radius + bed.max(bed.store().max_radius());
+  const ParticleStore p = bed.gathered([&](std::size_t k) {
+    const double z = bed.store().position[k].z();
+    return z > lower.z() - reach && z < lower.z() + extent.z() + reach;
+  });
+  std::vector<std::size_t> near(p.size());
+  for (std::size_t k = 0; k < near.size(); ++k) near[k] = k;
   auto touches_placed = [&](const Vec3& x) {
     for (const Vec3& y : placed_)
       if (engine.box().minimum_image(x - y).squaredNorm() < 4.0 * s.radius * s.radius) return true;
@@ -204,7 +199,7 @@ bool RainFill::target_reached(const DemEngine& engine) const {
   const RainFillSettings& s = settings_;
   return report_.inserted_mass + 0.5 * sphere_mass_ >= s.target_mass ||
          report_.inserted_count >= s.target_count ||
-         (s.target_height && resting_fill_top(engine.whole_bed(), s.resting_speed) >= *s.target_height);
+         (s.target_height && resting_fill_top(engine.bed(), s.resting_speed) >= *s.target_height);
 }
 
 FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
@@ -218,10 +213,9 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
   if (phase_ == Phase::done) return report;
   if (phase_ == Phase::start) {
     rng_.seed(s.seed);
-    if (const auto sink = engine.merged_outlet_sink()) {
-      sunk_before_ = sink->removed_mass();
-      sunk_count_before_ = sink->removed_count();
-    }
+    const DemEngine::SunkTally sunk = engine.sunk();
+    sunk_before_ = sunk.mass;
+    sunk_count_before_ = static_cast<std::size_t>(sunk.count);
     t0_ = engine.time();
     if (!insert_batch(engine)) return interrupted();
     phase_ = Phase::inserting;
@@ -277,7 +271,7 @@ FillReport RainFill::run(DemEngine& engine, std::ostream& log) {
   // Settling: at least one check interval, so freshly inserted spheres have landed.
   do {
     if (!advance(engine, s.settle_check_interval)) return interrupted();
-    report.final_max_speed = kept_max_speed(engine.whole_bed(), s.trim_height);
+    report.final_max_speed = kept_max_speed(engine.bed(), s.trim_height);
     report.settled = report.final_max_speed < s.settle_speed;
     if (++settle_checks_ % 20 == 0)  // a line per 0.1 s of settling (default check interval)
       log << format("  fill: settling at t = %.4g s, largest kept speed %.3g mm/s (goal %.3g)\n",
@@ -292,13 +286,17 @@ void RainFill::finish(DemEngine& engine, std::ostream& log) {
   const RainFillSettings& s = settings_;
   FillReport& report = report_;
   if (s.trim_height) {
-    // Booked from the whole bed; each rank removes its own (a ghost's flag is ignored).
-    const ParticleStore& bed = engine.whole_bed();
-    for (std::size_t k = 0; k < bed.size(); ++k)
-      if (bed.position[k].z() > *s.trim_height) {
-        ++report.trimmed_count;
-        report.trimmed_mass += bed.mass[k];
+    // Each rank removes its own (a ghost's flag is ignored); the books are summed over them.
+    const BedView bed = engine.bed();
+    std::vector<double> trimmed{0.0, 0.0};  // count, mass
+    for (std::size_t k = 0; k < bed.own(); ++k)
+      if (bed.store().position[k].z() > *s.trim_height) {
+        trimmed[0] += 1.0;
+        trimmed[1] += bed.store().mass[k];
       }
+    bed.sum(trimmed);
+    report.trimmed_count += static_cast<std::size_t>(trimmed[0]);
+    report.trimmed_mass += trimmed[1];
     const ParticleStore& mine = engine.particles();
     std::vector<char> above(mine.size(), 0);
     for (std::size_t k = 0; k < mine.size(); ++k) above[k] = mine.position[k].z() > *s.trim_height;
@@ -309,10 +307,9 @@ void RainFill::finish(DemEngine& engine, std::ostream& log) {
     p.layer[k] = std::isfinite(s.band_height)
                      ? std::floor((p.position[k].z() - s.band_origin) / s.band_height)
                      : 0.0;
-  if (const auto sink = engine.merged_outlet_sink()) {
-    report.sunk_mass = sink->removed_mass() - sunk_before_;
-    report.sunk_count = sink->removed_count() - sunk_count_before_;
-  }
+  const DemEngine::SunkTally sunk = engine.sunk();
+  report.sunk_mass = sunk.mass - sunk_before_;
+  report.sunk_count = static_cast<std::size_t>(sunk.count) - sunk_count_before_;
   report.end_time = engine.time();
   log << report.describe();
 }

@@ -143,11 +143,7 @@ class RainFill {
 FillReport rain_fill(DemEngine& engine, const RainFillSettings& settings, std::ostream& log);
 
 // The surface the region follows: the highest centre among particles slower than
-// `resting_speed`; -infinity when none rests.
-double resting_fill_top(const ParticleStore& particles, double resting_speed);
-
-// Whether a sphere at `x` would overlap a particle of `particles` (minimum image along the
-// periodic axes of `box`) or an active wall of `engine` at its current time.
-bool overlaps_anything(const DemEngine& engine, const Vec3& x, double radius);
+// `resting_speed`; -infinity when none rests. Of every rank's particles (collective).
+double resting_fill_top(const BedView& bed, double resting_speed);
 
 }  // namespace feedflow

@@ -2,12 +2,13 @@
 // The particle speeds along a horizontal line across a hopper slab, as the flow-pattern line of
 // fullsim/common/flow_pattern_measurement.hpp: the particles whose centres lie within `band`
 // of the height `z`, folded about the centre line x = 0 (both walls), averaged in bins of
-// `bin_width` from the centre outwards; empty bins are left out.
+// `bin_width` from the centre outwards; empty bins are left out. Of every rank's particles
+// (collective on a shared run).
 #include "fullsim/common/flow_pattern_measurement.hpp"
-#include "fullsim/dem/particle_store.hpp"
+#include "fullsim/dem/bed_view.hpp"
 
 namespace feedflow {
 
-SpeedProfile speed_profile(const ParticleStore& particles, double z, double band, double bin_width);
+SpeedProfile speed_profile(const BedView& bed, double z, double band, double bin_width);
 
 }  // namespace feedflow

@@ -46,6 +46,40 @@ TEST(DrumFreeSurface, FitReturnsTheTiltOfASyntheticBed) {
   }
 }
 
+// A column with more grains in flight above the bed than the first lists hold (20, each 3
+// radii above the last) is told from deeper lists: its surface point is the bed's top, as for
+// its neighbours, and the columns' tops merged from two halves of the bed give the same points.
+TEST(DrumFreeSurface, DeepFlightIsToldAndHalvesMergeToTheWhole) {
+  const double R = 0.0725, r = 1.5e-3;
+  std::vector<SurfacePoint> p = tilted_bed(0.0);
+  for (int k = 1; k <= 20; ++k) p.push_back({0.0, 0.01 + 3.0 * r * k});
+  const auto surface = bed_surface_points(p, r, R);
+  double top = -1.0;
+  for (const auto& q : p) top = q.z < 0.005 ? std::max(top, q.z) : top;
+  const auto at_axis = std::find_if(surface.begin(), surface.end(), [&](const SurfacePoint& s) { return std::abs(s.x) < r; });
+  ASSERT_NE(at_axis, surface.end());
+  EXPECT_LT(at_axis->z, 0.005);  // the bed, not a grain in flight
+  EXPECT_GT(at_axis->z, top - 2.5 * r);
+  // The second half's tops merged into the first's as a reduction over ranks does.
+  const std::vector<SurfacePoint> first(p.begin(), p.begin() + static_cast<long>(p.size() / 2)),
+      second(p.begin() + static_cast<long>(p.size() / 2), p.end());
+  const auto merged = bed_surface_points(first, r, R, [&](ColumnTops& t) {
+    const ColumnTops other = column_tops(second, r, R, t.depth);
+    for (std::size_t c = 0; c < t.count.size(); ++c) {
+      t.count[c] += other.count[c];
+      std::vector<double> both(t.z.begin() + static_cast<long>(c * t.depth), t.z.begin() + static_cast<long>((c + 1) * t.depth));
+      both.insert(both.end(), other.z.begin() + static_cast<long>(c * t.depth), other.z.begin() + static_cast<long>((c + 1) * t.depth));
+      std::sort(both.begin(), both.end(), std::greater<>());
+      std::copy_n(both.begin(), t.depth, t.z.begin() + static_cast<long>(c * t.depth));
+    }
+  });
+  ASSERT_EQ(merged.size(), surface.size());
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    EXPECT_EQ(merged[i].x, surface[i].x);
+    EXPECT_EQ(merged[i].z, surface[i].z);
+  }
+}
+
 // An S-shaped surface (a cubic of amplitude 0.2 R) is measured as a bulge near 0.2.
 TEST(DrumFreeSurface, SShapedSurfaceShowsItsBulge) {
   const double R = 0.0725, r = 1.5e-3;

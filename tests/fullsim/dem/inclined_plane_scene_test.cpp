@@ -26,7 +26,7 @@ TEST(DepositProfile, HighestTopPerBinAndMidRamp) {
   p.add(Vec3(0.497, 0, 0.020), 0.001, 390);  // same bin, higher
   p.add(Vec3(0.505, 0, 0.004), 0.001, 390);  // next bin
   p.add(Vec3(0.9, 0, 0.002), 0.001, 390);
-  const DepositProfile d = measure_deposit(p, 1.0, 0.001, 0.01);
+  const DepositProfile d = measure_deposit(BedView(p, p.size(), DemRanks::one()), 1.0, 0.001, 0.01);
   ASSERT_EQ(d.height.size(), 100u);
   EXPECT_NEAR(d.height[49], 0.020, 1e-12);
   EXPECT_NEAR(d.height[50], 0.004, 1e-12);

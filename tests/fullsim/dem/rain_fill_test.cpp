@@ -191,7 +191,7 @@ TEST(RainFill, RestingFillTopIgnoresFallingParticles) {
   ParticleStore p;
   p.add(Vec3(0, 0, 0.01), kRadius, kDensity);
   p.add(Vec3(0, 0, 0.05), kRadius, kDensity, 0.0, Vec3(0, 0, -1.0));
-  EXPECT_DOUBLE_EQ(resting_fill_top(p, 0.2), 0.01);
+  EXPECT_DOUBLE_EQ(resting_fill_top(BedView(p, p.size(), DemRanks::one()), 0.2), 0.01);
 }
 
 }  // namespace
