@@ -13,6 +13,7 @@
 #include "designer/simulate/reduced_model_beside.hpp"
 #include "fullsim/dem/scene/flow_order.hpp"
 #include "fullsim/dem/scene/speed_profile.hpp"
+#include "models/core/printf_format.hpp"
 #include "reports/result_format.hpp"
 
 namespace feedflow {
@@ -20,12 +21,6 @@ namespace {
 
 constexpr double kSampleInterval = 0.01;  // [s] time-series rows
 enum Column { kTime, kAfterOpening, kDischarged, kParticles, kMassInDomain, kKineticEnergy };
-
-std::string format(const char* fmt, auto... args) {
-  char buf[500];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
 
 HopperDischarge::Rows rows_of(const TimeSeries& s) {
   return discharge_rows(s, kAfterOpening, kDischarged, kMassInDomain, kKineticEnergy);

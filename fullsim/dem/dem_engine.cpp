@@ -12,22 +12,13 @@
 #include "fullsim/dem/morton_order.hpp"
 #include "fullsim/dem/ranks/merged_sink.hpp"
 #include "models/core/errors.hpp"
+#include "models/core/printf_format.hpp"
 
 // force_kernel.cpp is built with Eigen's SSE code off but its 16-byte alignment kept
 // (fullsim/CMakeLists.txt); a build whose flags give Eigen wider alignment must change both.
 static_assert(EIGEN_MAX_STATIC_ALIGN_BYTES == 16, "Eigen alignment differs from force_kernel.cpp");
 
 namespace feedflow {
-namespace {
-
-std::string format(const char* fmt, auto... args) {
-  char buf[700];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
-
-}  // namespace
-
 DemEngine::DemEngine(DemSettings settings, SimulationBox box, ParticleStore particles)
     : settings_(std::move(settings)), box_(box), particles_(std::move(particles)) {}
 

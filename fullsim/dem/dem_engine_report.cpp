@@ -9,15 +9,10 @@
 #endif
 
 #include "fullsim/dem/dem_engine.hpp"
+#include "models/core/printf_format.hpp"
 
 namespace feedflow {
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-  char buf[700];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
 
 int thread_count() {
 #ifdef _OPENMP

@@ -4,17 +4,12 @@
 #include <cstdio>
 
 #include "models/core/errors.hpp"
+#include "models/core/printf_format.hpp"
 
 namespace feedflow {
 namespace {
 
 constexpr double kPrintedPrecision = 5e-4;  // half a unit in the 4th significant digit, relative
-
-std::string format(const char* fmt, double a, double b) {
-  char buf[300];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
-  return buf;
-}
 
 }  // namespace
 

@@ -4,16 +4,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "models/core/printf_format.hpp"
+
 namespace feedflow {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-std::string format(const char* fmt, auto... args) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
 
 double sphere_mass(const DemParticle& p) {
   return p.density * 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;

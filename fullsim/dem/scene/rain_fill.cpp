@@ -12,16 +12,11 @@
 
 #include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
+#include "models/core/printf_format.hpp"
 #include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
 namespace {
-
-std::string format(const char* fmt, auto... args) {
-  char buf[400];
-  std::snprintf(buf, sizeof buf, fmt, args...);
-  return buf;
-}
 
 // Uniform in [0, 1) from the top 53 bits: the same numbers on every platform.
 double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
