@@ -24,6 +24,10 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
           "slab_depth", &S::slab_depth, dim::length, "mm", Range{0.0, 1.0, false, true},
           "depth of the periodic slab (hopper 3 mm, chute 15 mm; drum: full length)"),
       optional_number_field<S>(
+          "sector_angle", &S::sector_angle, dim::angle, "deg", Range{0.0, 6.2832, false, false},
+          "a conical hopper's sector between frictionless symmetry planes (at most 90 deg; "
+          "default 360 deg: the whole cone)"),
+      optional_number_field<S>(
           "end_time", &S::end_time, dim::time, "s", kTimeRange,
           "simulated time after filling (default: until converged or stopped)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",

@@ -214,12 +214,16 @@ Chart stress_chart(const Hopper& h, const HopperMaterial& m, const double design
 Chart emptying_chart(double content, double rate, const Band& total) {
   Chart emptying{"discharged_mass_vs_time", "Discharged mass against time", {"time", "s"},
                  {"discharged mass", "kg"}, {}, ""};
+  const double end = 1.2 * content / (total.low > 0.0 ? total.low : rate);  // the time axis
   for (const auto& [label, q, style] : {std::tuple{"steady discharge", rate, SeriesStyle::line},
                                         std::tuple{"band, low rate", total.low, SeriesStyle::dashed},
                                         std::tuple{"band, high rate", total.high, SeriesStyle::dashed}}) {
+    if (!(q > 0.0)) {  // a band reaching zero: an outlet that arches discharges nothing
+      emptying.series.push_back({label, style, {0.0, end}, {0.0, 0.0}, {}});
+      continue;
+    }
     const double empty_at = content / q;
-    emptying.series.push_back({label, style, {0.0, empty_at, std::max(1.2 * content / total.low, empty_at)},
-                               {0.0, content, content}, {}});
+    emptying.series.push_back({label, style, {0.0, empty_at, std::max(end, empty_at)}, {0.0, content, content}, {}});
   }
   emptying.note = "Reduced model: a constant rate until the hopper is empty; a simulation shows the start-up and "
                   "the end of discharge.";

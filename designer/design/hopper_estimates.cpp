@@ -74,9 +74,16 @@ void discharge_results(const Material& material, const Hopper& h, const HopperAs
   const double loose = material.bulk.loose_density.value_or(material.bulk.density) * h.filled_volume();
   results.emplace_back("hopper_content", banded(content, "kg", Band{loose, content},
                                                 "filled volume x bulk density (loose .. design)", Rung::L0));
-  if (rate > 0.0)
+  // A rate band reaching zero (an outlet that may arch) leaves the time without an upper end.
+  if (rate > 0.0 && total.low > 0.0)
     results.emplace_back("discharge_time", banded(content / rate, "s", Band{content / total.high, content / total.low},
                                                   "hopper content / mass flow rate (steady discharge)", Rung::L0));
+  else if (rate > 0.0)
+    results.emplace_back("discharge_time",
+                         banded(content / rate, "s", Band{},
+                                "hopper content / mass flow rate (steady discharge); no band: the rate's band "
+                                "reaches zero (the outlet may arch), so the time has no upper end",
+                                Rung::L0));
 }
 
 }  // namespace

@@ -37,8 +37,8 @@ class DemHopperAdapter final : public SceneAdapter {
       : request_(request), scene_(hopper_scene_from_case(request.case_data)) {
     scene_.settings.ranks = request.ranks;
     // The rows' time axis is the time after the opening.
-    discharge_.trickle_rate = discharge_.arch.trickle_share * scene_.slab.depth *
-                              outlet_scale_rate(request.case_data.material.bulk.density, scene_.slab.outlet_width);
+    discharge_.trickle_rate =
+        discharge_.arch.trickle_share * scene_.outlet_rate_scale(request.case_data.material.bulk.density);
   }
 
   std::string what() const override { return "the hopper"; }
@@ -96,7 +96,7 @@ class DemHopperAdapter final : public SceneAdapter {
   }
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
-    const double scale = scene_.depth_scale();
+    const double scale = scene_.scale();
     const double t_open = scene_.opening_time;
     const BedView bed = engine_->bed();
     const DemEngine::SunkTally sunk = engine_->sunk();
@@ -109,9 +109,12 @@ class DemHopperAdapter final : public SceneAdapter {
                        "DEM", "DEM; " + describe_flow_pattern(), "particle speeds", 0.0};
     const SteadyRate rate = add_discharge_results(discharge_, rows_of(run.series), flow_line_, w, record);
     auto& results = record.results;
-    if (rate.found)
+    if (rate.found && scene_.slab())
       results.emplace_back("mass_flow_rate_slab", number(rate.rate, "kg/s", rate.low, rate.high,
                                                          "DEM slab as simulated (before the depth scaling)"));
+    else if (rate.found && scale != 1.0)
+      results.emplace_back("mass_flow_rate_sector", number(rate.rate, "kg/s", rate.low, rate.high,
+                                                           "DEM sector as simulated (before the scaling to the whole cone)"));
     const FlowOrder order = layer_order(bed);
     results.emplace_back("fifo_index", Estimate{order.fifo_index, "", std::nullopt, std::nullopt,
                                                 format("layer bands: pairs from different bands leaving in band order "
@@ -130,10 +133,11 @@ class DemHopperAdapter final : public SceneAdapter {
   }
 
   void explain(const SceneRunResult& run, DesignRecord& record) override {
-    const double scale = scene_.depth_scale();
+    const double scale = scene_.scale();
+    const char* part = scene_.slab() ? "slab" : "sector";
     Chart chart{"dem_discharged_mass_vs_time", "Cumulative discharged mass against time (DEM)",
                 {"time after opening", "s"}, {"discharged mass", "kg"}, {}, ""};
-    ChartSeries dem{"DEM slab x " + format("%.4g", scale), SeriesStyle::line, {}, {}, {}, -1};
+    ChartSeries dem{scale == 1.0 ? std::string("DEM") : format("DEM %s x %.4g", part, scale), SeriesStyle::line, {}, {}, {}, -1};
     for (const auto& r : run.series.rows()) {
       dem.x.push_back(r[kAfterOpening]);
       dem.y.push_back(r[kDischarged] * scale);
@@ -148,17 +152,27 @@ class DemHopperAdapter final : public SceneAdapter {
       chart.series.push_back({"reduced model, steady", SeriesStyle::dashed, {t0, dem.x.back()},
                               {m0, m0 + qr * (dem.x.back() - t0)}, {}, -1});
     }
-    chart.note = "DEM masses scaled from the slab to the slot length (x " + format("%.4g", scale) + ")";
+    chart.note = scene_.slab() ? format("DEM masses scaled from the slab to the slot length (x %.4g)", scale)
+                 : scale == 1.0 ? std::string("DEM of the whole cone")
+                                : format("DEM masses scaled from the sector to the whole cone (x %.4g)", scale);
     record.charts.push_back(chart);
 
     auto& a = record.assumptions;
-    a.push_back("quasi-2D slab instead of the 3D hopper: " + format("%.3g", scene_.slab.depth * 1e3) +
-                " mm deep, masses scaled by the slot length / slab depth; a one-layer slab is a disc "
-                "packing, which the seed used too (it over-predicted q_m slightly)");
-    a.push_back("walls: a finite triangle-mesh wedge and analytic bin planes with the particle-wall "
-                "Table 2 set; the outlet is opened by removing the gate plane once the fill has "
-                "settled (the rig slides its side walls up)");
-    a.push_back("slab faces ([dem] slab_faces): " + scene_.slab.describe_faces());
+    if (const WedgeHopperSlab* slab = scene_.slab()) {
+      a.push_back("quasi-2D slab instead of the 3D hopper: " + format("%.3g", slab->depth * 1e3) +
+                  " mm deep, masses scaled by the slot length / slab depth; a one-layer slab is a disc "
+                  "packing, which the seed used too (it over-predicted q_m slightly)");
+      a.push_back("walls: a finite triangle-mesh wedge and analytic bin planes with the particle-wall "
+                  "Table 2 set; the outlet is opened by removing the gate plane once the fill has "
+                  "settled (the rig slides its side walls up)");
+      a.push_back("slab faces ([dem] slab_faces): " + slab->describe_faces());
+    } else {
+      a.push_back("conical hopper in 3D: " + std::get<ConicalHopper>(scene_.geometry).simulated_part() +
+                  " ([dem] sector_angle)");
+      a.push_back("walls: a triangle-mesh cone (facets within R/20 of the true cone) and an analytic "
+                  "cylindrical bin with the particle-wall Table 2 set; the outlet is opened by removing "
+                  "the gate plane once the fill has settled");
+    }
     a.push_back("filling: rain-fall following the fill top, settled to 1 mm/s or 0.5 s, trimmed at "
                 "H; particles are deleted 5 R below the outlet (their mass is booked)");
     a.push_back("the run ends when the steady rate's 95 % interval is within +-5 %, the hopper "
@@ -210,22 +224,19 @@ class DemHopperAdapter final : public SceneAdapter {
 
   // The particle speeds along the flow-pattern line now (of every rank's particles).
   SpeedProfile flow_line(const BedView& bed) const {
-    const double r = scene_.slab.radius;
-    return speed_profile(bed, 0.5 * scene_.slab.bin_bottom(), 2.0 * r, 2.0 * r);
+    const double r = scene_.radius();
+    return speed_profile(bed, 0.5 * scene_.transition_height(), 2.0 * r, 2.0 * r, scene_.profile_offset());
   }
 
   std::string describe_flow_pattern() const {
-    const double r = scene_.slab.radius;
+    const double r = scene_.radius();
     return format("mass flow when the speed beside the wall is above %.2g of the centre line's, at mid-height of "
                   "the converging section over the steady window (z = %.3g m; particles within %.3g mm of it, "
                   "bins of %.3g mm)",
-                  kMassFlowSpeedRatio, 0.5 * scene_.slab.bin_bottom(), 2e3 * r, 2e3 * r);
+                  kMassFlowSpeedRatio, 0.5 * scene_.transition_height(), 2e3 * r, 2e3 * r);
   }
 
-  std::string slab_model() const {
-    return format("DEM slab %.3g mm deep (rung L3), scaled x %.4g (slot length %.4g m / slab depth)",
-                  scene_.slab.depth * 1e3, scene_.depth_scale(), scene_.slot_length);
-  }
+  std::string slab_model() const { return scene_.model_text(); }
 
   void log_mass_book(double sunk, double in_domain) const {
     if (!request_.log) return;

@@ -5,10 +5,15 @@
 
 namespace feedflow {
 
-SpeedProfile speed_profile(const BedView& bed, double z, double band, double bin_width) {
+SpeedProfile speed_profile(const BedView& bed, double z, double band, double bin_width,
+                           ProfileOffset offset) {
   const ParticleStore& p = bed.store();
   auto in_line = [&](std::size_t i) { return std::abs(p.position[i].z() - z) <= band; };
-  auto bin_of = [&](std::size_t i) { return static_cast<std::size_t>(std::abs(p.position[i].x()) / bin_width); };
+  auto bin_of = [&](std::size_t i) {
+    const Vec3& x = p.position[i];
+    const double d = offset == ProfileOffset::across_x ? std::abs(x.x()) : std::hypot(x.x(), x.y());
+    return static_cast<std::size_t>(d / bin_width);
+  };
   double last = -1.0;  // the outermost bin with a particle, of every rank
   for (std::size_t i = 0; i < bed.own(); ++i)
     if (in_line(i)) last = std::max(last, static_cast<double>(bin_of(i)));

@@ -9,6 +9,11 @@
 
 namespace feedflow {
 
-SpeedProfile speed_profile(const BedView& bed, double z, double band, double bin_width);
+// How far a particle is from the centre: |x| (a wedge, both walls folded together) or its
+// distance from the z axis (a cone).
+enum class ProfileOffset { across_x, from_axis };
+
+SpeedProfile speed_profile(const BedView& bed, double z, double band, double bin_width,
+                           ProfileOffset offset = ProfileOffset::across_x);
 
 }  // namespace feedflow
