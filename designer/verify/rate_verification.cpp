@@ -56,7 +56,9 @@ std::string verify_flow_pattern(const RateVerification& v, Estimates& results) {
 RateVerificationPlan plan_rate_verification(const Hopper& h, double tolerance, double budget) {
   RateVerificationPlan plan;
   if (!h.is_wedge()) {
-    plan.description = "the CEL rung is plane strain: a conical hopper has no continuum verification yet";
+    plan.description = "the CEL rung is plane strain: a conical hopper has no continuum verification yet; "
+                       "the particle rung runs the cone in 3D (feedflow simulate CASE --solver dem, a sector "
+                       "by [dem] sector_angle)";
     return plan;
   }
   const MeasuredBench& table = measured_bench();
