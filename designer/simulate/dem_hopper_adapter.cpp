@@ -39,6 +39,8 @@ class DemHopperAdapter final : public SceneAdapter {
     // The rows' time axis is the time after the opening.
     discharge_.trickle_rate =
         discharge_.arch.trickle_share * scene_.outlet_rate_scale(request.case_data.material.bulk.density);
+    if (!scene_.slab())
+      discharge_.scale_rate = scene_.scale() == 1.0 ? "rho_b pi/4 D^2 sqrt(g D)" : "rho_b pi/4 D^2 sqrt(g D) x the sector's share";
   }
 
   std::string what() const override { return "the hopper"; }

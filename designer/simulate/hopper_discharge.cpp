@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "models/core/printf_format.hpp"
+
 namespace feedflow {
 namespace {
 
@@ -60,12 +62,9 @@ std::string HopperDischarge::stop_reason(const Rows& rows) const {
 }
 
 std::string HopperDischarge::describe() const {
-  char text[300];
-  std::snprintf(text, sizeof text,
-                "arched when less than %.3g kg/s (%.3g of rho_b W sqrt(g W)) leaves for %.3g s and the kinetic "
+  return format("arched when less than %.3g kg/s (%.3g of %s) leaves for %.3g s and the kinetic "
                 "energy is below 1/2 M (%.3g m/s)^2; emptied below %.3g of the fill",
-                trickle_rate, arch.trickle_share, arch.quiet_time, arch.speed, arch.empty_fraction);
-  return text;
+                trickle_rate, arch.trickle_share, scale_rate.c_str(), arch.quiet_time, arch.speed, arch.empty_fraction);
 }
 
 SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge::Rows& rows,

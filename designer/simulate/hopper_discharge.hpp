@@ -18,6 +18,7 @@ namespace feedflow {
 struct HopperDischarge {
   double opening = 0.0;        // [s] on the time axis given
   double trickle_rate = 0.0;   // [kg/s] of the simulated section
+  std::string scale_rate = "rho_b W sqrt(g W)";  // the outlet's scale rate in words (a slot's)
   double fill_mass = 0.0;      // [kg] in the simulated section at the opening
   ArchCriterion arch{};
 
