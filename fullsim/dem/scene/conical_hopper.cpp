@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "fullsim/dem/scene/hopper_rain.hpp"
 #include "models/core/errors.hpp"
 #include "models/core/printf_format.hpp"
 #include "models/units/angle.hpp"
@@ -12,9 +13,6 @@ namespace feedflow {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kFollowGap = 0.03;    // [m] drop height over the resting fill
-constexpr double kRainSpeed = 0.5;     // [m/s] initial downward speed of the rain
-constexpr double kFillDuration = 0.6;  // [s] the rate fills the hopper in about this time
 constexpr double kPacking = 0.6;       // solid fraction of a poured bed of spheres
 
 // The inward normals of the sector's sides (through the axis at azimuths -alpha/2, +alpha/2).
@@ -129,30 +127,16 @@ double ConicalHopper::fill_mass(double density, double phi) const {
 }
 
 RainFillSettings ConicalHopper::rain(double density, int bands, std::uint64_t seed) const {
-  RainFillSettings s;
   const SimulationBox b = box();
   const double region = std::max(8.0 * radius, 0.02);
-  s.region_lower = Vec3(b.lower.x(), b.lower.y(), 2.0 * radius);
-  s.region_upper = Vec3(b.upper.x(), b.upper.y(), 2.0 * radius + region);
-  s.follow_gap = kFollowGap;
-  s.radius = radius;
-  s.density = density;
-  s.mass_rate = fill_mass(density, kPacking) / kFillDuration;
-  // 20 % more than the estimate, so the trim at the fill top leaves a level surface.
-  s.target_mass = 1.2 * fill_mass(density, kPacking);
-  s.initial_velocity = Vec3(0, 0, -kRainSpeed);
-  s.insert_time_cap = 6.0 * kFillDuration + 2.0;
-  s.settle_time_cap = 0.5;
-  s.target_height = wall_top() - kFollowGap - 2.0 * radius;
-  s.trim_height = fill_top();
-  s.band_origin = 0.0;
-  s.band_height = fill_top() / std::max(1, bands);
-  s.seed = seed;
-  s.admits = admits();
+  RainFillSettings s = hopper_rain_settings({Vec3(b.lower.x(), b.lower.y(), 2.0 * radius),
+                                             Vec3(b.upper.x(), b.upper.y(), 2.0 * radius + region), radius,
+                                             density, fill_mass(density, kPacking), fill_top(), wall_top(),
+                                             bands, seed, admits()});
   // At the start the region lies where the cone is narrowest: a random point of the region's
   // box lands in the cone that rarely, so the tries per sphere grow by the box's area over the
   // cone's section there (a 20 deg cone's quarter: x 42).
-  const double open = share() * std::numbers::pi * std::pow(radius_at(s.region_upper.z()) - radius, 2);
+  const double open = share() * kPi * std::pow(radius_at(s.region_upper.z()) - radius, 2);
   const double area = (b.upper.x() - b.lower.x()) * (b.upper.y() - b.lower.y());
   s.attempts = static_cast<int>(std::min(1e5, std::ceil(s.attempts * std::max(1.0, area / open))));
   return s;

@@ -5,18 +5,11 @@
 #include <cstdio>
 #include <numbers>
 
+#include "fullsim/dem/scene/hopper_rain.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/angle.hpp"
 
 namespace feedflow {
-namespace {
-
-constexpr double kFollowGap = 0.03;      // [m] drop height over the resting fill
-constexpr double kRainSpeed = 0.5;       // [m/s] initial downward speed of the rain
-constexpr double kFillDuration = 0.6;    // [s] the rate fills the hopper in about this time
-
-}  // namespace
-
 double WedgeHopperSlab::apex_depth() const { return 0.5 * outlet_width / std::tan(semi_angle); }
 double WedgeHopperSlab::bin_bottom() const {
   return 0.5 * (bin_width - outlet_width) / std::tan(semi_angle);
@@ -130,7 +123,6 @@ double WedgeHopperSlab::fill_mass(double density, double phi) const {
 }
 
 RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t seed) const {
-  RainFillSettings s;
   const double b = 0.5 * bin_width - radius;
   const double region = std::max(8.0 * radius, 0.02);
   Vec3 lower(-b, 0.0, 2.0 * radius), upper(b, depth, 2.0 * radius + region);
@@ -139,29 +131,10 @@ RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t 
     upper.y() = depth - radius;
     if (upper.y() - lower.y() < 1e-3 * radius) lower.y() = upper.y() = 0.5 * depth;
   }
-  s.region_lower = lower;
-  s.region_upper = upper;
-  s.follow_gap = kFollowGap;
-  s.radius = radius;
-  s.density = density;
   // A one-layer slab packs discs (area fraction ~0.82, volume share 2/3 of it); deeper ~0.6.
   const double phi = periodic() ? 0.6 : 0.82 * (4.0 / 3.0 * radius) / depth;
-  s.mass_rate = fill_mass(density, phi) / kFillDuration;
-  // 20 % more than the estimate, so the trim at the fill top leaves a level surface.
-  s.target_mass = 1.2 * fill_mass(density, phi);
-  s.initial_velocity = Vec3(0, 0, -kRainSpeed);
-  s.insert_time_cap = 6.0 * kFillDuration + 2.0;
-  s.settle_time_cap = 0.5;
-  // The rain region rides kFollowGap over the resting fill and admits() stops it at the wall top:
-  // once the fill comes that close nothing more can be placed, so inserting ends there instead of
-  // idling to the time cap (the pilot slab's 20 % surplus does not fit under its wall top).
-  s.target_height = wall_top() - kFollowGap - 2.0 * radius;
-  s.trim_height = fill_top();
-  s.band_origin = 0.0;
-  s.band_height = fill_top() / std::max(1, bands);
-  s.seed = seed;
-  s.admits = admits();
-  return s;
+  return hopper_rain_settings(
+      {lower, upper, radius, density, fill_mass(density, phi), fill_top(), wall_top(), bands, seed, admits()});
 }
 
 std::string WedgeHopperSlab::describe_faces() const {

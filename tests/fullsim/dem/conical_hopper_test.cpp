@@ -8,8 +8,8 @@
 
 #include "fullsim/dem/scene/conical_hopper.hpp"
 #include "models/core/errors.hpp"
+#include "tests/fullsim/dem/dem_test_scene.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
-#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
@@ -20,15 +20,6 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 // spheres, as a sector of `sector_deg`.
 ConicalHopper small_cone(double sector_deg) {
   return ConicalHopper{30.0 * kDeg, 0.06, 0.12, 0.12, sector_deg * kDeg, 3e-3};
-}
-
-DemSettings twin_settings() {
-  DemSettings s;
-  s.material.particle = {3e-3, 390.0};
-  s.material.particle_particle = testing::pine_table2_particle_particle();
-  s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
-  return s;
 }
 
 // Every vertex of the cone mesh lies on the cone (radius D/2 + z tan theta) between the outlet
@@ -87,7 +78,7 @@ TEST(ConicalHopper, GeometryFillMassAndSector) {
 // wall, and every inserted sphere is in the domain, through the sink or trimmed, exactly once.
 TEST(ConicalHopper, QuarterFillsInsideAndKeepsItsBooks) {
   const ConicalHopper h = small_cone(90.0);
-  DemEngine e(twin_settings(), h.box(), ParticleStore{});
+  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
   h.add_walls(e);
   std::ostringstream log;
   RainFillSettings rain = h.rain(390.0, 5, 7);

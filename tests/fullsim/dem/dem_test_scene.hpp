@@ -4,6 +4,7 @@
 #include <random>
 
 #include "fullsim/dem/dem_engine.hpp"
+#include "tests/support/pine_table2.hpp"
 
 namespace feedflow::dem_test {
 
@@ -34,6 +35,17 @@ inline DemSettings hertz_settings(double restitution, double friction, double ro
   s.material.particle = {kRadius, kDensity};
   s.material.particle_particle = soft_contact(restitution, friction, rolling_friction);
   s.material.particle_wall = soft_contact(restitution, friction, rolling_friction);
+  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
+  return s;
+}
+
+// Table 2's particle-particle and particle-wall sets with Hertz + Mindlin + CDT rolling, spheres
+// of 3 mm and 390 kg/m^3: the coarse twins of the scene tests.
+inline DemSettings pine_twin_settings() {
+  DemSettings s;
+  s.material.particle = {3e-3, kDensity};
+  s.material.particle_particle = testing::pine_table2_particle_particle();
+  s.material.particle_wall = testing::pine_table2_particle_wall();
   s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
   return s;
 }

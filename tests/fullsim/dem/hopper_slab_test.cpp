@@ -9,7 +9,6 @@
 #include "models/core/errors.hpp"
 #include "tests/fullsim/dem/dem_test_scene.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
-#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
@@ -20,21 +19,12 @@ WedgeHopperSlab small_wedge() {
   return WedgeHopperSlab{30.0 * std::numbers::pi / 180.0, 0.06, 0.12, 0.1, 6e-3, 3e-3, 0.3};
 }
 
-DemSettings twin_settings() {
-  DemSettings s;
-  s.material.particle = {3e-3, 390.0};
-  s.material.particle_particle = testing::pine_table2_particle_particle();
-  s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
-  return s;
-}
-
 // Mass bookkeeping: after filling, trimming and 0.25 s of discharge, every inserted sphere is
 // either in the domain, booked by the sink or trimmed, exactly once (ids), and the masses add
 // up to the inserted mass (same spheres: to the last bits but round-off of the sums).
 TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
   const WedgeHopperSlab h = small_wedge();
-  DemEngine e(twin_settings(), h.box(), ParticleStore{});
+  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
   h.add_walls(e);
   std::ostringstream log;
   RainFillSettings rain = h.rain(390.0, 5, 7);
@@ -51,7 +41,7 @@ TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
 // predicate), trimmed at the fill top, and the bands count up from the outlet plane.
 TEST(WedgeHopperSlab, FillStaysInsideTheWedgeAndIsBanded) {
   const WedgeHopperSlab h = small_wedge();
-  DemEngine e(twin_settings(), h.box(), ParticleStore{});
+  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
   h.add_walls(e);
   std::ostringstream log;
   RainFillSettings rain = h.rain(390.0, 5, 3);
@@ -93,7 +83,7 @@ TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
   auto faces = [&](SlabFaces f) {
     h.faces = f;
     h.check();
-    DemEngine e(twin_settings(), h.box(), ParticleStore{});
+    DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
     h.add_walls(e);
     std::vector<WallContactSet> sets;
     for (const Wall& w : e.walls())

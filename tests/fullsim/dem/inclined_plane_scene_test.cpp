@@ -11,8 +11,8 @@
 
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/dem/dem_test_scene.hpp"
 #include "tests/fullsim/dem/mass_books.hpp"
-#include "tests/support/pine_table2.hpp"
 
 namespace feedflow {
 namespace {
@@ -43,11 +43,7 @@ TEST(DepositProfile, HighestTopPerBinAndMidRamp) {
 // 13.5 cm) would be 3 to 9 diameters and the narrow one jams; the seed found the opening has a
 // minor effect on h_stop (data.md 3).
 std::unique_ptr<InclinedPlaneScene> filled_plane(double angle_deg, std::ostream& log) {
-  DemSettings s;
-  s.material.particle = {3e-3, 390.0};
-  s.material.particle_particle = testing::pine_table2_particle_particle();
-  s.material.particle_wall = testing::pine_table2_particle_wall();
-  s.law = choose_contact_law("hertz", "mindlin", "cdt", "none");
+  const DemSettings s = dem_test::pine_twin_settings();
   InclinedPlaneSpec spec;
   spec.angle = angle_deg * kDegree;
   spec.ramp_length = 0.25;
