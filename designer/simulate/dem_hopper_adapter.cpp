@@ -105,7 +105,7 @@ class DemHopperAdapter final : public SceneAdapter {
     log_mass_book(sunk.mass, bed.total_mass());
     const double discharged = sunk.mass - scene_.fill.sunk_mass;
     const double last = engine_->sunk(t_open).last;
-    DischargeWording w{Rung::L3, scale, slab_model(), "",
+    DischargeWording w{Rung::L3, scale, scene_.model_text(), "",
                        format("; arched: %.4g kg (scaled) left before the last exit at %.3g s after the opening",
                               discharged * scale, std::max(0.0, last - t_open)),
                        "DEM", "DEM; " + describe_flow_pattern(), "particle speeds", 0.0};
@@ -123,7 +123,7 @@ class DemHopperAdapter final : public SceneAdapter {
                                                        "(%d bands; %s by F >= %.2f)",
                                                        scene_.bands, order.label().c_str(), kMassFlowFifoIndex),
                                                 Rung::L3, ""});
-    results.emplace_back("discharged_mass", number(discharged * scale, "kg", std::nullopt, std::nullopt, slab_model()));
+    results.emplace_back("discharged_mass", number(discharged * scale, "kg", std::nullopt, std::nullopt, scene_.model_text()));
     results.emplace_back("simulated_time_after_opening",
                          number(engine_->time() - t_open, "s", std::nullopt, std::nullopt,
                                 run.end == RunEnd::stopped ? run.stop_reason : "the run's duration"));
@@ -237,8 +237,6 @@ class DemHopperAdapter final : public SceneAdapter {
                   "bins of %.3g mm)",
                   kMassFlowSpeedRatio, 0.5 * scene_.transition_height(), 2e3 * r, 2e3 * r);
   }
-
-  std::string slab_model() const { return scene_.model_text(); }
 
   void log_mass_book(double sunk, double in_domain) const {
     if (!request_.log) return;

@@ -97,7 +97,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
 
 namespace {
 
-constexpr const char* kSceneName = "DEM wedge hopper slab";
+constexpr const char* kSceneName = "DEM hopper";  // a wedge slab or a cone
 
 bool is_hopper_checkpoint(const Hdf5File& f) {
   if (f.exists("/scene/initial_ids")) return true;  // written before the scene was named
