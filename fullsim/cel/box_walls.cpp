@@ -17,7 +17,7 @@ std::uint8_t face_bits(WallCondition w, NodeConstraint normal) {
 
 }  // namespace
 
-void assign_node_constraints(const PlaneStrainGrid& grid, const BoxWalls& walls,
+void assign_node_constraints(const CelGrid& grid, const BoxWalls& walls,
                              const CellFields& cells, NodeFields& nodes) {
   for (std::size_t a = 0; a < grid.node_count(); ++a) {
     const int i = grid.node_i(a), j = grid.node_j(a);

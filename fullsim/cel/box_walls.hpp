@@ -18,7 +18,7 @@ struct BoxWalls {
 };
 
 // Sets NodeFields::constraint from the box faces and the solid cells.
-void assign_node_constraints(const PlaneStrainGrid& grid, const BoxWalls& walls,
+void assign_node_constraints(const CelGrid& grid, const BoxWalls& walls,
                              const CellFields& cells, NodeFields& nodes);
 
 // Zeroes the prescribed velocity components of every node.

@@ -35,6 +35,7 @@ void write_cel_checkpoint(Hdf5File& f, const CelSceneRun& run) {
     f.set_attribute("/", "nx", static_cast<std::int64_t>(g.nx));
     f.set_attribute("/", "ny", static_cast<std::int64_t>(g.ny));
     f.set_attribute("/", "cell_size", g.cell_size);
+    f.set_attribute("/", "symmetry", std::string(symmetry_name(g.symmetry)));
     const std::size_t n = g.cell_count(), m = g.node_count();
     f.create_group("/cells");
     f.write("/cells/volume_fraction", s.cells.volume_fraction, {n}, "1");
@@ -98,7 +99,7 @@ void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& 
   std::filesystem::rename(temporary, file);
 }
 
-CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const PlaneStrainGrid& g) {
+CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const CelGrid& g) {
   const Hdf5File f(file, Hdf5File::Mode::read);
   CelCheckpoint c = read_cel_checkpoint(f, g);
   if (f.exists("/scene/series")) {
@@ -110,7 +111,7 @@ CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const Plane
   return c;
 }
 
-CelCheckpoint read_cel_checkpoint(const Hdf5File& f, const PlaneStrainGrid& g) {
+CelCheckpoint read_cel_checkpoint(const Hdf5File& f, const CelGrid& g) {
   const std::filesystem::path& file = f.path();
   const auto refuse = [&](const std::string& why) {
     throw std::runtime_error("checkpoint " + file.string() + ": " + why);
@@ -123,6 +124,14 @@ CelCheckpoint read_cel_checkpoint(const Hdf5File& f, const PlaneStrainGrid& g) {
   if (f.integer_attribute("/", "nx") != g.nx || f.integer_attribute("/", "ny") != g.ny ||
       f.double_attribute("/", "cell_size") != g.cell_size)
     refuse("written for another grid (another case or cell size)");
+  // Checkpoints written before axisymmetric grids existed are plane strain.
+  std::string symmetry = symmetry_name(GridSymmetry::plane_strain);
+  try {
+    symmetry = f.string_attribute("/", "symmetry");
+  } catch (const std::runtime_error&) {
+  }
+  if (symmetry != symmetry_name(g.symmetry))
+    refuse("written for a " + symmetry + " grid, this run's is " + symmetry_name(g.symmetry));
   const std::size_t n = g.cell_count(), m = g.node_count();
   CelCheckpoint c;
   CelSolverState& s = c.solver;

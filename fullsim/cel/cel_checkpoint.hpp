@@ -28,9 +28,9 @@ void write_cel_checkpoint(const std::filesystem::path& file, const CelSceneRun& 
                           const std::vector<std::vector<double>>& samples);
 // Throws std::runtime_error naming the file when it is not a CEL checkpoint of this version or
 // does not fit `grid`.
-CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const PlaneStrainGrid& grid);
+CelCheckpoint read_cel_checkpoint(const std::filesystem::path& file, const CelGrid& grid);
 // The run's state into and from an open file (no samples: the scene run loop keeps its series).
 void write_cel_checkpoint(Hdf5File& file, const CelSceneRun& run);
-CelCheckpoint read_cel_checkpoint(const Hdf5File& file, const PlaneStrainGrid& grid);
+CelCheckpoint read_cel_checkpoint(const Hdf5File& file, const CelGrid& grid);
 
 }  // namespace feedflow::cel

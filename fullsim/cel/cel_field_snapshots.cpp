@@ -13,7 +13,7 @@ namespace feedflow::cel {
 namespace {
 
 // The part of segment a-b inside the grid's box (Liang-Barsky); false when none of it is.
-bool clip_to_grid(const PlaneStrainGrid& g, Eigen::Vector2d& a, Eigen::Vector2d& b) {
+bool clip_to_grid(const CelGrid& g, Eigen::Vector2d& a, Eigen::Vector2d& b) {
   const Eigen::Vector2d lo = g.origin, hi = g.origin + g.cell_size * Eigen::Vector2d(g.nx, g.ny);
   const Eigen::Vector2d d = b - a;
   double t0 = 0.0, t1 = 1.0;
@@ -37,7 +37,7 @@ bool clip_to_grid(const PlaneStrainGrid& g, Eigen::Vector2d& a, Eigen::Vector2d&
 
 // The rigid walls present now, as segments inside the grid (end rays cut at its edge).
 SceneOutline wall_outline(const CelSolver& solver) {
-  const PlaneStrainGrid& g = solver.grid();
+  const CelGrid& g = solver.grid();
   const double reach = 2.0 * g.cell_size * (g.nx + g.ny);
   SceneOutline out;
   for (const RigidWall& wall : solver.options().rigid_walls) {
@@ -81,7 +81,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   const std::size_t n = g.cell_count();
   std::vector<double> density(n), vf(n), pressure(n), e(n), velocity(3 * n, 0.0);
   for (std::size_t k = 0; k < n; ++k) {
-    density[k] = c.density(k, g.cell_volume());
+    density[k] = c.density(k, g.cell_volume(k));
     vf[k] = c.volume_fraction[k];
     pressure[k] = vf[k] > 0.0 ? -c.stress[k].trace() / 3.0 : 0.0;
     e[k] = c.void_ratio[k];
@@ -103,6 +103,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
     f.set_attribute("/", "cell_size", g.cell_size);
     f.set_attribute("/", "nx", std::int64_t{g.nx});
     f.set_attribute("/", "ny", std::int64_t{g.ny});
+    f.set_attribute("/", "symmetry", std::string(symmetry_name(g.symmetry)));
   }
   exists_ = true;
   if (f.exists(group)) return;  // a restart that lands on a written step
@@ -122,7 +123,7 @@ void CelFieldSnapshots::write(const CelSolver& solver) {
   write_sidecar(g);
 }
 
-void CelFieldSnapshots::write_sidecar(const PlaneStrainGrid& g) const {
+void CelFieldSnapshots::write_sidecar(const CelGrid& g) const {
   const std::string data = file_.filename().string();
   std::ostringstream s;
   s << "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"

@@ -28,7 +28,7 @@ class CelFieldSnapshots {
   std::size_t count() const { return times_.size(); }
 
  private:
-  void write_sidecar(const PlaneStrainGrid& grid) const;
+  void write_sidecar(const CelGrid& grid) const;
   std::filesystem::path file_;
   bool exists_ = false;  // the file is there to append to
   std::vector<double> times_;

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "fullsim/cel/plane_strain_grid.hpp"
+#include "fullsim/cel/cel_grid.hpp"
 
 namespace feedflow::cel {
 
@@ -18,7 +18,7 @@ inline constexpr std::uint8_t kSolidInsideWall = 2;
 
 struct CellFields {
   std::vector<double> volume_fraction;   // material volume / cell volume, in [0, 1] [-]
-  std::vector<double> mass;              // material mass per unit depth [kg/m]
+  std::vector<double> mass;              // material mass per unit depth [kg/m] (per radian [kg/rad] axisymmetric)
   std::vector<Eigen::Matrix3d> stress;   // Cauchy stress, tension positive [Pa]
   std::vector<double> void_ratio;        // [-]
   std::vector<std::uint8_t> solid;       // kSolid*: no material, no transport; 0: fluid

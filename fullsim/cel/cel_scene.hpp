@@ -39,7 +39,7 @@ struct SceneMaterial {
 
 struct CelScene {
   std::string name;
-  PlaneStrainGrid grid;
+  CelGrid grid;
   CelOptions options;
   std::vector<MaterialBlock> material;
   GravityPhase gravity;
@@ -50,6 +50,6 @@ struct CelScene {
 };
 
 // "h = 10 mm, 30 x 72 cells (0.30 m x 0.72 m)"
-std::string grid_text(const PlaneStrainGrid& grid);
+std::string grid_text(const CelGrid& grid);
 
 }  // namespace feedflow::cel

@@ -10,9 +10,12 @@
 
 namespace feedflow::cel {
 
-CelSolver::CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model,
+CelSolver::CelSolver(const CelGrid& grid, const HypoplasticModel& model,
                      const CelOptions& options)
     : grid_(grid), model_(model), options_(options), remap_(options.remap, options.volume_fraction_cut) {
+  if (grid_.axisymmetric() && grid_.origin.x() == 0.0 && options_.walls.left != WallCondition::free_slip)
+    throw std::invalid_argument("axisymmetric CEL grid on the axis: its left face is the symmetry "
+                                "line and must be free slip");
   cells_.resize(grid_.cell_count());
   nodes_.resize(grid_.node_count());
   mark_wall_cells(grid_, place_walls(options_.rigid_walls, time_), cells_);
@@ -40,18 +43,23 @@ void CelSolver::add_material(const MaterialBlock& b) {
   for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
     if (cells_.solid[c] || distance_to_walls(walls, grid_.cell_centre(c)) < 0.0) continue;
     const Eigen::Vector2d lo = grid_.cell_centre(c).array() - 0.5 * h;
-    const double wx = std::max(0.0, std::min(lo.x() + h, b.upper.x()) - std::max(lo.x(), b.lower.x()));
+    const double x0 = std::max(lo.x(), b.lower.x()), x1 = std::min(lo.x() + h, b.upper.x());
     const double wy = std::max(0.0, std::min(lo.y() + h, b.upper.y()) - std::max(lo.y(), b.lower.y()));
-    const double add = std::min(wx * wy / (h * h), 1.0 - cells_.volume_fraction[c]);
+    if (!(x1 > x0) || !(wy > 0.0)) continue;
+    // The overlap's share of the cell volume (r-weighted when axisymmetric: int r dr over
+    // [x0, x1] is (x1 - x0) times the depth at its middle).
+    const double overlap = (x1 - x0) * grid_.depth_at(0.5 * (x0 + x1)) * wy;
+    const double add = std::min(overlap / grid_.cell_volume(c), 1.0 - cells_.volume_fraction[c]);
     if (add <= 0.0) continue;
-    const double m_add = add * grid_.cell_volume() * b.bulk_density;
+    const double m_add = add * grid_.cell_volume(c) * b.bulk_density;
     const double m_old = cells_.mass[c], vf_old = cells_.volume_fraction[c];
     cells_.stress[c] = (cells_.stress[c] * vf_old + b.stress * add) / (vf_old + add);
     cells_.void_ratio[c] = (cells_.void_ratio[c] * m_old + b.void_ratio * m_add) / (m_old + m_add);
     cells_.mass[c] = m_old + m_add;
     cells_.volume_fraction[c] = vf_old + add;
   }
-  void_node_mass_ = std::max(void_node_mass_, kVoidNodeMassFraction * 0.25 * grid_.cell_volume() *
+  // Of the smallest cell (axisymmetric: the column at the axis).
+  void_node_mass_ = std::max(void_node_mass_, kVoidNodeMassFraction * 0.25 * grid_.cell_volume(0) *
                                                   b.bulk_density);
   refresh_nodes();
 }
@@ -111,7 +119,7 @@ CelStepReport CelSolver::step() {
     std::ostringstream s;
     s << "CEL blow-up at step " << steps_ << ", t = " << time_ << " s, cell ("
       << grid_.cell_i(c) << ", " << grid_.cell_j(c) << "): no finite wave speed (void ratio "
-      << cells_.void_ratio[c] << ", density " << cells_.density(c, grid_.cell_volume())
+      << cells_.void_ratio[c] << ", density " << cells_.density(c, grid_.cell_volume(c))
       << " kg/m^3, pressure " << -cells_.stress[c].trace() / 3.0 << " Pa)";
     if (dt_previous_ > 0.0)
       s << "; the last step was " << dt_previous_ << " s, try a time step below "

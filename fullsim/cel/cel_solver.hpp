@@ -81,7 +81,7 @@ struct CelStepReport {
 
 class CelSolver {
  public:
-  CelSolver(const PlaneStrainGrid& grid, const HypoplasticModel& model, const CelOptions& options);
+  CelSolver(const CelGrid& grid, const HypoplasticModel& model, const CelOptions& options);
 
   // Adds material to the cells the block overlaps (volume fraction = overlapped area share),
   // except cells whose centre lies inside a rigid wall present at the current time.
@@ -107,7 +107,7 @@ class CelSolver {
   // Steps until time t_end (the last step is not shortened).
   void run_until(double t_end);
 
-  const PlaneStrainGrid& grid() const { return grid_; }
+  const CelGrid& grid() const { return grid_; }
   const CellFields& cells() const { return cells_; }
   const NodeFields& nodes() const { return nodes_; }
   const std::vector<std::size_t>& active_cells() const { return active_; }
@@ -132,7 +132,7 @@ class CelSolver {
   double safer_courant() const;
   void guard(const CelStepReport& report) const;
 
-  PlaneStrainGrid grid_;
+  CelGrid grid_;
   HypoplasticModel model_;
   CelOptions options_;
   CellFields cells_;

@@ -41,7 +41,7 @@ CelScene make_column_collapse_scene(const ColumnCollapse& column, const SceneMat
 
 double runout(const CelSolver& solver) {
   const std::vector<double> t = column_thickness(solver);
-  const PlaneStrainGrid& g = solver.grid();
+  const CelGrid& g = solver.grid();
   const double threshold = 0.5 * g.cell_size;
   for (int i = 0; i < g.nx; ++i) {
     if (t[i] >= threshold) continue;

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "fullsim/cel/plane_strain_grid.hpp"
+#include "fullsim/cel/cel_grid.hpp"
 
 namespace feedflow::cel {
 

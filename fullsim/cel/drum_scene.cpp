@@ -26,7 +26,7 @@ double fill_level(double r, double f) {
 }
 
 FreeSurface drum_surface(const CelSolver& solver, const DrumSection& section, double span) {
-  const PlaneStrainGrid& g = solver.grid();
+  const CelGrid& g = solver.grid();
   const double t = solver.time();
   const NodeVector down = solver.frame().gravity(solver.options().gravity, t).normalized();
   const NodeVector up = -down, across(up.y(), -up.x());  // (across, up) right-handed

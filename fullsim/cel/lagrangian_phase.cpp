@@ -24,7 +24,7 @@ NodeVector advance_node_velocities(double average_dt, double void_node_mass, Nod
 Eigen::Matrix3d material_rate_of_deformation(const Eigen::Matrix3d& d, double vf, double dt,
                                              MixedCellRule rule) {
   if (rule == MixedCellRule::equal_strain_rate || vf >= 1.0 || !(vf > 0.0)) return d;
-  const double cell_rate = d(0, 0) + d(1, 1);
+  const double cell_rate = d.trace();  // the hoop rate d(2, 2) too (axisymmetric)
   // The void (1 - vf of the cell) takes the volume change; compression beyond it goes to the
   // material, at the rate that brings it to the cell's new volume.
   const double closing = -cell_rate * dt - (1.0 - vf);
@@ -36,7 +36,7 @@ Eigen::Matrix3d material_rate_of_deformation(const Eigen::Matrix3d& d, double vf
   return m;
 }
 
-CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
+CellUpdateReport update_cell_states(const CelGrid& grid,
                                     const std::vector<std::size_t>& active_cells,
                                     const HypoplasticModel& model,
                                     const SubsteppingOptions& substepping, MixedCellRule rule,
@@ -50,7 +50,7 @@ CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
     const auto nodes_of = grid.cell_nodes(c);
     CellVelocities v;
     for (int a = 0; a < kNodesPerCell; ++a) v[a] = nodes.velocity[nodes_of[a]];
-    const Eigen::Matrix3d l = velocity_gradient(v, grid.cell_size);
+    const Eigen::Matrix3d l = velocity_gradient(v, grid.cell_size, grid.inverse_radius(c));
     const Eigen::Matrix3d d = 0.5 * (l + l.transpose());
     const Eigen::Matrix3d w = 0.5 * (l - l.transpose());
     cells.volume_rate[c] = d.trace();

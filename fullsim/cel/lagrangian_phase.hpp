@@ -34,7 +34,7 @@ struct CellUpdateReport {
   int unconverged_cells = 0;
 };
 
-CellUpdateReport update_cell_states(const PlaneStrainGrid& grid,
+CellUpdateReport update_cell_states(const CelGrid& grid,
                                     const std::vector<std::size_t>& active_cells,
                                     const HypoplasticModel& model,
                                     const SubsteppingOptions& substepping, MixedCellRule rule,

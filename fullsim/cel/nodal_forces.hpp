@@ -17,7 +17,7 @@ struct ForceOptions {
 };
 
 // m_a = sum over the cells around a of M_c / 4.
-void lump_nodal_mass(const PlaneStrainGrid& grid, const CellFields& cells, NodeFields& nodes);
+void lump_nodal_mass(const CelGrid& grid, const CellFields& cells, NodeFields& nodes);
 
 // Bulk-viscosity pressure (positive in compression) of a cell [Pa].
 double bulk_viscosity_pressure(const ForceOptions& o, double density, double wave_speed,
@@ -25,7 +25,7 @@ double bulk_viscosity_pressure(const ForceOptions& o, double density, double wav
 
 // Fills NodeFields::force with m_a g - f_int for the active cells (uses v^{n-1/2} for the
 // hourglass and the last tr D for the bulk viscosity). CellFields::wave_speed must be current.
-void assemble_nodal_forces(const PlaneStrainGrid& grid, const std::vector<std::size_t>& active_cells,
+void assemble_nodal_forces(const CelGrid& grid, const std::vector<std::size_t>& active_cells,
                            const ForceOptions& options, const NodeVector& gravity,
                            CellFields& cells, NodeFields& nodes);
 

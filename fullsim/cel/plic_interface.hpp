@@ -7,7 +7,7 @@
 // sweep coordinates (along, across); the material lies on n . x <= alpha.
 #include <array>
 
-#include "fullsim/cel/plane_strain_grid.hpp"
+#include "fullsim/cel/cel_grid.hpp"
 
 namespace feedflow::cel {
 

@@ -21,7 +21,7 @@ struct Face {
   std::size_t lo, hi, node_a, node_b;
 };
 
-Face face(const PlaneStrainGrid& g, int axis, int along, int across) {
+Face face(const CelGrid& g, int axis, int along, int across) {
   const int n_along = axis == 0 ? g.nx : g.ny;
   const auto cell = [&](int k) {
     if (k < 0 || k >= n_along) return kOutside;
@@ -32,17 +32,18 @@ Face face(const PlaneStrainGrid& g, int axis, int along, int across) {
   return {cell(along - 1), cell(along), g.node(across, along), g.node(across + 1, along)};
 }
 
-std::size_t node_on_line(const PlaneStrainGrid& g, int axis, int along, int across) {
+std::size_t node_on_line(const CelGrid& g, int axis, int along, int across) {
   return axis == 0 ? g.node(along, across) : g.node(across, along);
 }
 
 bool is_solid(const CellFields& cells, std::size_t c) { return c != kOutside && cells.solid[c]; }
 
-// Transport volume through a face, positive towards `hi` [m^3/m].
-double transport_volume(const PlaneStrainGrid& g, const NodeFields& nodes, const Face& f, int axis,
-                        double dt, const CellFields& cells) {
+// Transport volume through face (axis, along, across), positive towards `hi` [m^3/m or m^3/rad].
+double transport_volume(const CelGrid& g, const NodeFields& nodes, const Face& f, int axis,
+                        int along, int across, double dt, const CellFields& cells) {
   if (is_solid(cells, f.lo) || is_solid(cells, f.hi)) return 0.0;
-  return dt * g.face_area() * 0.5 * (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
+  return dt * g.face_area(axis, along, across) * 0.5 *
+         (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
 }
 
 template <class T>
@@ -69,7 +70,7 @@ RemapOptions second_order_state(RemapOptions o) {
   return o;
 }
 
-void RemapPhase::refresh_cell_state(const PlaneStrainGrid& g, const CellFields& cells) {
+void RemapPhase::refresh_cell_state(const CelGrid& g, const CellFields& cells) {
   const std::size_t n = g.cell_count();
   vf_.resize(n);
   rho_.resize(n);
@@ -90,7 +91,7 @@ void RemapPhase::refresh_cell_state(const PlaneStrainGrid& g, const CellFields& 
   }
 }
 
-double RemapPhase::material_flux(const PlaneStrainGrid& g, const CellFields& cells, int axis,
+double RemapPhase::material_flux(const CelGrid& g, const CellFields& cells, int axis,
                                  std::size_t donor, double dv, double toward) const {
   const double vm = now_.material_volume[donor];
   if (vm <= 0.0) return 0.0;
@@ -116,14 +117,16 @@ double RemapPhase::material_flux(const PlaneStrainGrid& g, const CellFields& cel
     for (int di = -1; di <= 1; ++di) block[(di + 1) + 3 * (dj + 1)] = vf_at(di, dj);
   const NodeVector n = youngs_normal(block);
   if (n.isZero()) return donor_cell;
-  const double h = g.cell_size, along = volume / h;  // the intermediate cell as a rectangle
+  // The intermediate cell as a rectangle in the (x, y) plane: volumes over the donor column's
+  // depth (1, or r_c per radian: the cut is planar, its volume weighted at the centre radius).
+  const double h = g.cell_size, depth = g.column_depth(i), along = volume / (h * depth);
   const CutRectangle cut = cut_rectangle(along, h, NodeVector(n[axis], n[1 - axis]), vf);
-  const double w = std::min(slab / h, along);
+  const double w = std::min(slab / (h * depth), along);
   const double area = toward > 0.0 ? material_area(cut, along - w, along) : material_area(cut, 0.0, w);
-  return std::min(area, vm);
+  return std::min(area * depth, vm);
 }
 
-RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, int axis,
+RemapPhase::SweepResult RemapPhase::sweep(const CelGrid& g, double dt, int axis,
                                           const CellFields& cells, const NodeFields& nodes) {
   const int n_along = axis == 0 ? g.nx : g.ny;
   const int n_across = axis == 0 ? g.ny : g.nx;
@@ -149,7 +152,7 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
     };
     for (int k = k_first; k <= k_last; ++k) {
       const Face f = face(g, axis, k, m);
-      const double dv = transport_volume(g, nodes, f, axis, dt, cells);
+      const double dv = transport_volume(g, nodes, f, axis, k, m, dt, cells);
       if (dv == 0.0) continue;
       const std::size_t donor = dv > 0.0 ? f.lo : f.hi;
       const auto exchange = [&](auto& d, const auto& amount) {
@@ -211,7 +214,7 @@ RemapPhase::SweepResult RemapPhase::sweep(const PlaneStrainGrid& g, double dt, i
   return {worst, outflow};
 }
 
-NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
+NodeVector RemapPhase::sweep_momentum(const CelGrid& g, int axis) {
   const int n_along = axis == 0 ? g.nx : g.ny;    // cells along the axis
   const int n_across = axis == 0 ? g.ny : g.nx;   // cell lines
   zero(node_mass_delta_, 0.0);
@@ -282,7 +285,7 @@ NodeVector RemapPhase::sweep_momentum(const PlaneStrainGrid& g, int axis) {
   return outflow;
 }
 
-RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, double dt,
+RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt,
                                   bool x_first, double void_node_mass, CellFields& cells,
                                   NodeFields& nodes) {
   outflow_lo_[0] = walls.left == WallCondition::outflow;
@@ -292,15 +295,14 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
   const std::size_t n = g.cell_count();
   now_.resize(n);
   delta_.resize(n);
-  const double v0 = g.cell_volume();
   // The Lagrangian cell: V^L = V + the outward transport volumes of its flux-carrying faces.
-  for (std::size_t c = 0; c < n; ++c) now_.volume[c] = v0;
+  for (std::size_t c = 0; c < n; ++c) now_.volume[c] = g.cell_volume(c);
   for (int axis = 0; axis < kDimension; ++axis) {
     const int n_along = axis == 0 ? g.nx : g.ny, n_across = axis == 0 ? g.ny : g.nx;
     for (int m = 0; m < n_across; ++m)
       for (int k = outflow_lo_[axis] ? 0 : 1; k <= (outflow_hi_[axis] ? n_along : n_along - 1); ++k) {
         const Face f = face(g, axis, k, m);
-        const double dv = transport_volume(g, nodes, f, axis, dt, cells);
+        const double dv = transport_volume(g, nodes, f, axis, k, m, dt, cells);
         if (f.lo != kOutside) now_.volume[f.lo] += dv;
         if (f.hi != kOutside) now_.volume[f.hi] -= dv;
       }
@@ -341,6 +343,7 @@ RemapReport RemapPhase::remap(const PlaneStrainGrid& g, const BoxWalls& walls, d
   for (long k = 0; k < cells_n; ++k) {
     const auto c = static_cast<std::size_t>(k);
     const double vm = now_.material_volume[c];
+    const double v0 = g.cell_volume(c);
     const double vf = vm / v0;
     if (!cells.solid[c]) {
       largest = std::max(largest, vf);

@@ -96,7 +96,7 @@ class RemapPhase {
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
   // constraints applied.
-  RemapReport remap(const PlaneStrainGrid& grid, const BoxWalls& walls, double dt, bool x_first,
+  RemapReport remap(const CelGrid& grid, const BoxWalls& walls, double dt, bool x_first,
                     double void_node_mass, CellFields& cells, NodeFields& nodes);
 
  private:
@@ -108,14 +108,14 @@ class RemapPhase {
   struct SweepResult {
     double worst_share = 0.0, outflow_mass = 0.0;
   };
-  SweepResult sweep(const PlaneStrainGrid& grid, double dt, int axis, const CellFields& cells,
+  SweepResult sweep(const CelGrid& grid, double dt, int axis, const CellFields& cells,
                     const NodeFields& nodes);
-  void refresh_cell_state(const PlaneStrainGrid& grid, const CellFields& cells);
+  void refresh_cell_state(const CelGrid& grid, const CellFields& cells);
   // Material volume given by `donor` through a face of transport volume |dv| on its `toward`
   // side (+1 high, -1 low) along `axis`.
-  double material_flux(const PlaneStrainGrid& grid, const CellFields& cells, int axis,
+  double material_flux(const CelGrid& grid, const CellFields& cells, int axis,
                        std::size_t donor, double dv, double toward) const;
-  NodeVector sweep_momentum(const PlaneStrainGrid& grid, int axis);  // returns the outflow
+  NodeVector sweep_momentum(const CelGrid& grid, int axis);  // returns the outflow
 
   // Material volume of cell c from its current contents (grain-consistent mode).
   double grain_volume(std::size_t c) const {

@@ -11,7 +11,7 @@
 #include <limits>
 #include <vector>
 
-#include "fullsim/cel/plane_strain_grid.hpp"
+#include "fullsim/cel/cel_grid.hpp"
 
 namespace feedflow::cel {
 

@@ -8,14 +8,13 @@
 
 namespace feedflow::cel {
 
-TimeStepChoice stable_time_step(const PlaneStrainGrid& grid,
+TimeStepChoice stable_time_step(const CelGrid& grid,
                                 const std::vector<std::size_t>& active_cells,
                                 const HypoplasticModel& model, const TimeStepOptions& options,
                                 const ForceOptions& viscosity, const NodeFields& nodes,
                                 CellFields& cells) {
   const double h = grid.cell_size;
   const double edge = h / std::sqrt(2.0);
-  const double v_cell = grid.cell_volume();
   TimeStepChoice choice;
   choice.dt = options.max_time_step;
   const auto n_active = static_cast<long>(active_cells.size());
@@ -30,7 +29,7 @@ TimeStepChoice stable_time_step(const PlaneStrainGrid& grid,
       const std::size_t c = active_cells[static_cast<std::size_t>(k)];
       // Nothing in this loop may throw (an exception cannot leave an OpenMP region): a state
       // without a finite wave speed is handed to the blow-up guard.
-      const double rho = cells.density(c, v_cell);
+      const double rho = cells.density(c, grid.cell_volume(c));
       const double cd = rho > 0.0 && std::isfinite(rho)
                             ? dilatational_wave_speed_bound(model, cells.stress[c],
                                                             cells.void_ratio[c], rho)

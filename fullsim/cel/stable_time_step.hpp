@@ -28,7 +28,7 @@ struct TimeStepChoice {
 };
 
 // Writes CellFields::wave_speed of the active cells.
-TimeStepChoice stable_time_step(const PlaneStrainGrid& grid,
+TimeStepChoice stable_time_step(const CelGrid& grid,
                                 const std::vector<std::size_t>& active_cells,
                                 const HypoplasticModel& model, const TimeStepOptions& options,
                                 const ForceOptions& viscosity, const NodeFields& nodes,

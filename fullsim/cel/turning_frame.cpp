@@ -21,7 +21,7 @@ NodeVector TurningFrame::carried_velocity(const Eigen::Vector2d& x) const {
   return angular_velocity * NodeVector(-r.y(), r.x());
 }
 
-void add_frame_forces(const TurningFrame& frame, const PlaneStrainGrid& grid, double t,
+void add_frame_forces(const TurningFrame& frame, const CelGrid& grid, double t,
                       double void_node_mass, NodeFields& nodes) {
   if (!frame.turning(t)) return;
   const double w = frame.angular_velocity;

@@ -31,7 +31,7 @@ struct TurningFrame {
 
 // Adds the centrifugal and Coriolis forces to the nodes heavier than void_node_mass (velocities
 // v^{n-1/2} in the frame).
-void add_frame_forces(const TurningFrame& frame, const PlaneStrainGrid& grid, double t,
+void add_frame_forces(const TurningFrame& frame, const CelGrid& grid, double t,
                       double void_node_mass, NodeFields& nodes);
 
 }  // namespace feedflow::cel

@@ -33,7 +33,7 @@ NodeVector project(const NodeVector& v_rel, const NodeVector& n, const RigidWall
 
 }  // namespace
 
-std::vector<NodeVector> apply_wall_contact(const PlaneStrainGrid& grid,
+std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
                                            const std::vector<PlacedWall>& walls,
                                            const WallContactOptions& options, double dt,
                                            double void_node_mass, NodeFields& nodes) {
@@ -55,7 +55,7 @@ std::vector<NodeVector> apply_wall_contact(const PlaneStrainGrid& grid,
   return reaction;
 }
 
-void mark_wall_cells(const PlaneStrainGrid& grid, const std::vector<PlacedWall>& walls,
+void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells) {
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     if (cells.solid[c] == kSolidFixed) continue;

@@ -26,14 +26,14 @@ double distance_to_walls(const std::vector<PlacedWall>& walls, const Eigen::Vect
 
 // Applies the contact to the nodes heavier than void_node_mass; returns the reaction force of
 // each placed wall on the material (same order as `walls`) [N/m].
-std::vector<NodeVector> apply_wall_contact(const PlaneStrainGrid& grid,
+std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
                                            const std::vector<PlacedWall>& walls,
                                            const WallContactOptions& options, double dt,
                                            double void_node_mass, NodeFields& nodes);
 
 // Marks empty cells whose corners are all inside the walls kSolidInsideWall and releases
 // wall cells no longer inside (moved or removed walls); kSolidFixed cells stay.
-void mark_wall_cells(const PlaneStrainGrid& grid, const std::vector<PlacedWall>& walls,
+void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells);
 
 }  // namespace feedflow::cel

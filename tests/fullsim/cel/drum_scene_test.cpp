@@ -194,7 +194,7 @@ TEST(CelTurningFrame, FictitiousForcesOfAPointAtRestInTheLaboratory) {
   EXPECT_NEAR(frame.gravity(g, t).y(), 0.0, 1e-12);
   EXPECT_NEAR(frame.to_lab(frame.gravity(g, t), t).y(), -9.81, 1e-12);
 
-  const PlaneStrainGrid grid = make_plane_strain_grid(4, 4, 0.1);
+  const CelGrid grid = make_plane_strain_grid(4, 4, 0.1);
   NodeFields nodes;
   nodes.resize(grid.node_count());
   const std::size_t a = grid.node(3, 1);  // at (0.3, 0.1): r = (0.2, -0.1)

@@ -11,7 +11,7 @@ namespace feedflow::cel {
 namespace {
 
 struct Patch {
-  PlaneStrainGrid grid = make_plane_strain_grid(5, 4, 0.02);
+  CelGrid grid = make_plane_strain_grid(5, 4, 0.02);
   CellFields cells;
   NodeFields nodes;
   std::vector<std::size_t> active;
@@ -20,7 +20,7 @@ struct Patch {
     nodes.resize(grid.node_count());
     for (std::size_t c = 0; c < grid.cell_count(); ++c) {
       cells.volume_fraction[c] = 1.0;
-      cells.mass[c] = 300.0 * grid.cell_volume();
+      cells.mass[c] = 300.0 * grid.cell_volume(c);
       cells.wave_speed[c] = 40.0;
       active.push_back(c);
     }

@@ -40,7 +40,7 @@ TEST(PlicInterface, YoungsNormalPointsIntoTheVoid) {
 
 // Remap alone in a uniform velocity field (open box faces, no flux there).
 struct Translation {
-  PlaneStrainGrid grid;
+  CelGrid grid;
   CellFields cells;
   NodeFields nodes;
   RemapPhase remap;
@@ -69,7 +69,7 @@ struct Translation {
 };
 
 // Area share of a cell inside a shape, by 20 x 20 sub-samples.
-double covered(const PlaneStrainGrid& g, std::size_t c, const std::function<bool(NodeVector)>& in) {
+double covered(const CelGrid& g, std::size_t c, const std::function<bool(NodeVector)>& in) {
   int k = 0;
   const NodeVector lo = g.cell_centre(c).array() - 0.5 * g.cell_size;
   for (int a = 0; a < 20; ++a)
@@ -91,7 +91,7 @@ ShapeResult translate(MaterialFlux flux, const std::function<bool(NodeVector)>& 
   for (std::size_t c = 0; c < t.grid.cell_count(); ++c) {
     const double vf = covered(t.grid, c, shape);
     t.cells.volume_fraction[c] = vf;
-    t.cells.mass[c] = vf * t.grid.cell_volume() * 290.0;
+    t.cells.mass[c] = vf * t.grid.cell_volume(c) * 290.0;
     t.cells.stress[c] = -100.0 * Eigen::Matrix3d::Identity();
     t.cells.void_ratio[c] = 0.71;
   }

@@ -19,7 +19,7 @@ constexpr double kDensity = 290.0, kVoidRatio = 0.71;
 // Cells and nodes of a closed grid (open box faces: no flux) whose nodes get the prescribed
 // velocity before every remap.
 struct PrescribedFlow {
-  PlaneStrainGrid grid;
+  CelGrid grid;
   CellFields cells;
   NodeFields nodes;
   RemapPhase remap;
@@ -34,7 +34,7 @@ struct PrescribedFlow {
   }
   void fill(std::size_t c, double vf, const Eigen::Matrix3d& stress, double e = kVoidRatio) {
     cells.volume_fraction[c] = vf;
-    cells.mass[c] = vf * grid.cell_volume() * kDensity;
+    cells.mass[c] = vf * grid.cell_volume(c) * kDensity;
     cells.stress[c] = stress;
     cells.void_ratio[c] = e;
   }
@@ -210,7 +210,7 @@ TEST_P(CelRemapVariants, ConserveContentsInARotatingFlow) {
   const auto mass = [&](std::size_t c) { return flow.cells.mass[c]; };
   const auto void_mass = [&](std::size_t c) { return flow.cells.void_ratio[c] * flow.cells.mass[c]; };
   const auto stress = [&](std::size_t c) {
-    return flow.cells.stress[c](0, 0) * flow.cells.volume_fraction[c] * flow.grid.cell_volume();
+    return flow.cells.stress[c](0, 0) * flow.cells.volume_fraction[c] * flow.grid.cell_volume(c);
   };
   const double m0 = flow.sum(mass), e0 = flow.sum(void_mass), s0 = flow.sum(stress);
   const double dt = 0.4 * h / (omega * 0.71);

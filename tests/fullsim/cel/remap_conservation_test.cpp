@@ -106,7 +106,7 @@ TEST(CelRemap, DensityFollowsTheVoidRatio) {
       if (s.cells().mass[c] <= 0.0) continue;
       const double vf = s.cells().volume_fraction[c];
       if (vf < 0.999) ++mixed;
-      const double rho = s.cells().density(c, s.grid().cell_volume());
+      const double rho = s.cells().density(c, s.grid().cell_volume(c));
       worst = std::max(worst, std::abs(rho * (1.0 + s.cells().void_ratio[c]) / rho_g - 1.0));
     }
     std::printf("%s: %d mixed cells, largest |rho (1 + e) / rho_g - 1| = %.2e\n",
