@@ -23,7 +23,7 @@ cel::RemapOptions remap_options(const Case& c, cel::MaterialFlux scene_flux) {
   return o;
 }
 
-std::string model_label_of(const Case& c, const cel::RemapOptions& o) {
+std::string model_label_of(const Case& c, const cel::RemapOptions& o, const cel::CelGrid& grid) {
   const bool second = o.second_order_stress || o.second_order_void_ratio ||
                       o.second_order_density || o.second_order_momentum;
   const bool donor_cell = o.material_flux == cel::MaterialFlux::donor_cell;
@@ -31,7 +31,7 @@ std::string model_label_of(const Case& c, const cel::RemapOptions& o) {
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
   if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";
   if (c.cel.mixed_cells == "void_first") remap += ", void-first mixed cells";
-  return "CEL-FEM plane strain (G-B hypoplastic, " + remap + " remap)";
+  return std::string("CEL-FEM ") + cel::symmetry_name(grid.symmetry) + " (G-B hypoplastic, " + remap + " remap)";
 }
 
 HypoplasticModel material_model(const Case& c) {
@@ -62,7 +62,7 @@ CelSceneAdapter::CelSceneAdapter(const SimulationRequest& request, cel::CelScene
   if (c.cel.mixed_cells == "equal_strain_rate")
     scene_.options.mixed_cells = cel::MixedCellRule::equal_strain_rate;
   if (c.cel.time_step_safety) scene_.options.time_step.safety = *c.cel.time_step_safety;
-  model_label_ = model_label_of(c, scene_.options.remap);
+  model_label_ = model_label_of(c, scene_.options.remap, scene_.grid);
 }
 
 Stepper* CelSceneAdapter::build(std::ostream&, ProgressSink&) {

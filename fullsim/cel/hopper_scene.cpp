@@ -54,8 +54,10 @@ const char* hopper_section_name(HopperSection section) {
 
 CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
                            const SceneMaterial& material, double h, HopperSection section) {
-  if (!hopper.is_wedge())
-    throw std::invalid_argument("the CEL hopper scene is plane strain: wedge hoppers only");
+  const bool cone = !hopper.is_wedge();
+  if (cone && section == HopperSection::full)
+    throw std::invalid_argument("a conical hopper is simulated axisymmetric about its axis; the "
+                                "full-width section is for wedge hoppers");
   if (!(h > 0.0)) throw std::invalid_argument("cell size must be > 0");
   const bool full = section == HopperSection::full;
   const double t = std::tan(hopper.semi_angle);
@@ -71,9 +73,10 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
   // section has them on both sides of the centre line xc.
   const int half_columns = static_cast<int>(std::ceil(half_bin / h)) + 1;
   const double xc = hopper_centre_line(hopper, section);
-  s.grid = make_plane_strain_grid(full ? 2 * half_columns : half_columns,
-                                  static_cast<int>(std::ceil(top / h)) + 2, h,
-                                  {full ? xc - half_columns * h : 0.0, 0.0});
+  const int rows = static_cast<int>(std::ceil(top / h)) + 2;
+  s.grid = cone ? make_axisymmetric_grid(half_columns, rows, h)
+                : make_plane_strain_grid(full ? 2 * half_columns : half_columns, rows, h,
+                                         {full ? xc - half_columns * h : 0.0, 0.0});
   CelOptions& o = s.options;
   o.walls = {WallCondition::free_slip, WallCondition::free_slip, WallCondition::outflow,
              WallCondition::open};
@@ -93,9 +96,13 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
   s.event = {"outlet gate removed", {o.rigid_walls.size() - 1}, {},
              std::numeric_limits<double>::infinity()};
   s.event_duration = 3.0;
-  s.section_depth_factor = full ? 1.0 : 2.0;
+  s.section_depth_factor = cone ? revolution_factor(s.grid) : full ? 1.0 : 2.0;
   char line[320];
-  if (full)
+  if (cone)
+    std::snprintf(line, sizeof line,
+                  "scene: conical hopper, axisymmetric (r, z) about its axis (the symmetry line, "
+                  "free slip; per radian, x 2 pi), ");
+  else if (full)
     std::snprintf(line, sizeof line,
                   "scene: wedge hopper, plane-strain full-width section (both walls, centre "
                   "line x = %.4g m), ", xc);
@@ -105,10 +112,12 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
                   "free slip), ");
   s.plan.push_back(line + grid_text(s.grid));
   std::snprintf(line, sizeof line,
-                "walls: inclined %.3g deg from the vertical from the outlet edge x = %.4g m to "
-                "the bin wall x = %.4g m at y = %.4g m, vertical above%s; Coulomb mu = %.3f "
-                "(%.3g deg)", in_degrees(hopper.semi_angle), xc + half_outlet, xc + half_bin,
-                knee, full ? ", and its mirror image about the centre line" : "", mu,
+                "walls: %s %.3g deg from the vertical from the outlet edge %s = %.4g m to "
+                "the bin wall %s = %.4g m at %s = %.4g m, %s above%s; Coulomb mu = %.3f "
+                "(%.3g deg)", cone ? "cone" : "inclined", in_degrees(hopper.semi_angle),
+                cone ? "r" : "x", xc + half_outlet, cone ? "r" : "x", xc + half_bin,
+                cone ? "z" : "y", knee, cone ? "cylinder" : "vertical",
+                full ? ", and its mirror image about the centre line" : "", mu,
                 in_degrees(wall_friction_angle));
   s.plan.push_back(line);
   std::snprintf(line, sizeof line,
@@ -117,13 +126,15 @@ CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
                 material.bulk_density, material.void_ratio);
   s.plan.push_back(line);
   std::snprintf(line, sizeof line,
-                "outlet: bottom box face from x = %.4g m to %.4g m (outflow, mass booked), "
+                "outlet: bottom box face from %s = %.4g m to %.4g m (outflow, mass booked), "
                 "closed by a gate wall during the gravity phase; event: gate removed",
-                full ? xc - half_outlet : 0.0, xc + half_outlet);
+                cone ? "r" : "x", full ? xc - half_outlet : 0.0, xc + half_outlet);
   s.plan.push_back(line);
-  s.plan.push_back(full ? "skipped: outlet inside the grid (the outlet is the bottom box face)"
-                        : "skipped: the other half (symmetry plane; [cel] hopper_section = "
-                          "\"full\" simulates the full-width section), outlet inside the grid");
+  s.plan.push_back(cone ? "skipped: flow off the axis' symmetry (swirl, asymmetric arches and "
+                          "rat-holes), outlet inside the grid"
+                   : full ? "skipped: outlet inside the grid (the outlet is the bottom box face)"
+                          : "skipped: the other half (symmetry plane; [cel] hopper_section = "
+                            "\"full\" simulates the full-width section), outlet inside the grid");
   return s;
 }
 

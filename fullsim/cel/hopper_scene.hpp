@@ -1,6 +1,8 @@
 #pragma once
 // The CEL scene of a wedge hopper (seed FEM deck, data.md 2.1-2.2), as a half slice or as the
-// full-width section. Half slice (the seed's): the symmetry plane at x = 0 (free-slip left face),
+// full-width section, or of a conical hopper on the axisymmetric grid: the half slice's
+// geometry in (r, z), the axis in place of the symmetry plane, the cone's wall and the bin's
+// cylinder, the circular outlet on the axis (section_depth_factor 2 pi). Half slice (the seed's): the symmetry plane at x = 0 (free-slip left face),
 // the inclined wall from the outlet edge (W/2, 0) to the bin wall, the vertical bin wall above.
 // Full width: the bin walls at x = 0 and x = bin_width, the centre line at bin_width / 2, two
 // mirror-image inclined walls; the grid is the half slice's mirrored about the centre line (one
@@ -22,7 +24,7 @@ enum class HopperSection {
   full,  // both walls, section_depth_factor 1
 };
 
-// Throws std::invalid_argument for a conical hopper (plane strain only) or h <= 0.
+// Throws std::invalid_argument for h <= 0 or a conical hopper's full section.
 CelScene make_hopper_scene(const Hopper& hopper, double wall_friction_angle,
                            const SceneMaterial& material, double cell_size,
                            HopperSection section = HopperSection::half);

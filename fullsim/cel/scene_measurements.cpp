@@ -8,13 +8,19 @@ SpeedProfile speed_profile(const CelSolver& solver, double y, double centre_x) {
   const auto& g = solver.grid();
   const int j = std::clamp(static_cast<int>(std::lround((y - g.origin.y()) / g.cell_size)), 0, g.ny);
   const int i0 = std::clamp(static_cast<int>(std::lround((centre_x - g.origin.x()) / g.cell_size)), 0, g.nx);
+  // A node's mass per unit of its depth (axisymmetric: over the mean radius of the columns
+  // beside it, so the nodes near the axis are not light for their small radius).
+  const auto filling = [&](int i) {
+    const int lo = std::max(i - 1, 0), hi = std::min(i, g.nx - 1);
+    return solver.nodes().mass[g.node(i, j)] / (0.5 * (g.column_depth(lo) + g.column_depth(hi)));
+  };
   double heaviest = 0.0;
-  for (int i = i0; i <= g.nx; ++i) heaviest = std::max(heaviest, solver.nodes().mass[g.node(i, j)]);
+  for (int i = i0; i <= g.nx; ++i) heaviest = std::max(heaviest, filling(i));
   const double light = 0.05 * heaviest;  // nodes of nearly empty cells do not count
   SpeedProfile line;
   for (int i = i0; i <= g.nx; ++i) {
     const std::size_t a = g.node(i, j);
-    if (solver.nodes().mass[a] <= light) continue;
+    if (filling(i) <= light) continue;
     line.offset.push_back((i - i0) * g.cell_size);
     line.speed.push_back(solver.nodes().velocity[a].norm());
   }

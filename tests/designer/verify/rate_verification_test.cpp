@@ -42,13 +42,16 @@ TEST(RateVerification, TimeScalesWithTheOutletCubed) {
   EXPECT_NEAR(at30 / at60, 8.0, 1e-9);
 }
 
-// A conical hopper has no continuum plan (the CEL rung is plane strain), and says so.
-TEST(RateVerification, ConicalHopperHasNoContinuumPlan) {
+// A conical hopper runs axisymmetric on a grid the size of the wedge's half slice: the same
+// plan and time as the wedge of the same outlet, and the description says whose error it is.
+TEST(RateVerification, ConicalHopperTakesTheWedgesPlan) {
   Hopper h = pilot(0.06);
   h.shape = "conical";
-  const RateVerificationPlan p = plan_rate_verification(h, 0.5, 1e9);
-  EXPECT_TRUE(p.cells_across.empty());
-  EXPECT_NE(p.description.find("plane strain"), std::string::npos);
+  const RateVerificationPlan cone = plan_rate_verification(h, 0.5, 1e9);
+  const RateVerificationPlan wedge = plan_rate_verification(pilot(0.06), 0.5, 1e9);
+  EXPECT_EQ(cone.cells_across, wedge.cells_across);
+  EXPECT_EQ(cone.estimated_seconds, wedge.estimated_seconds);
+  EXPECT_NE(cone.description.find("the cone runs axisymmetric"), std::string::npos) << cone.description;
 }
 
 // The verified rate takes the reduced one's place (rung L2), the reduced one stays beside it, and
