@@ -85,5 +85,30 @@ TEST(RateVerification, AgreementIsTheOverlapOfBandAndInterval) {
   EXPECT_TRUE(said(contradicted, "mass flow rate contradicted"));
 }
 
+// On a cone the CEL rate stands (rung L2) but its flow pattern does not replace the reduced one:
+// the axisymmetric grid's cone pattern is not validated (it reads funnel where theory reads
+// mass), and the verdict says so with the CEL's reading.
+TEST(RateVerification, ConeKeepsTheReducedFlowPattern) {
+  const Case c = load_case("cases/conical_hopper.toml");
+  const DesignRecord design = design_check(c);
+  RateVerification v;
+  v.reference.value = 0.64;
+  v.reference.error_bar = 0.02;
+  v.reference.source = "test";
+  v.flow_pattern = "funnel";
+  DesignRecord verified = design;
+  apply_rate_verification(c, v, verified);
+  EXPECT_EQ(find_estimate(verified.results, "mass_flow_rate")->rung, Rung::L2);
+  const Estimate* pattern = find_estimate(verified.results, "flow_pattern");
+  ASSERT_NE(pattern, nullptr);
+  EXPECT_EQ(pattern->rung, Rung::L0);
+  EXPECT_EQ(std::get<std::string>(pattern->value), "mass");
+  bool said = false;
+  for (const auto& x : verified.verdict.reasons)
+    said = said || x.find("flow pattern not verified on the continuum rung: the axisymmetric CEL reads funnel") !=
+                       std::string::npos;
+  EXPECT_TRUE(said);
+}
+
 }  // namespace
 }  // namespace feedflow
