@@ -1,6 +1,7 @@
 #pragma once
-// The wedge hopper on the continuum rung (L2): a plane-strain half slice (or the full-width
-// section, [cel] hopper_section) filled and settled under gravity, then the gate removed;
+// A hopper on the continuum rung (L2): a wedge as a plane-strain half slice (or the full-width
+// section, [cel] hopper_section), a cone axisymmetric about its axis; filled and settled under
+// gravity, then the gate removed;
 // sampled every 10 ms (discharged mass, mass in the hopper, kinetic energy, scaled to the slot
 // length); measured: q_m over the steady window from the outflow ledger, arching, the flow
 // pattern from the wall-to-centre speed ratio.

@@ -61,21 +61,20 @@ struct SettledBin {
     }
     return v > 0.0 ? s / v : 0.0;
   }
+  // Per unit depth (per metre or per radian) [m^3/m or m^3/rad].
+  double material_volume() const {
+    const auto& g = solver.grid();
+    double v = 0.0;
+    for (std::size_t c = 0; c < g.cell_count(); ++c) v += solver.cells().volume_fraction[c] * g.cell_volume(c);
+    return v;
+  }
   // The settled surface: the material volume over the section's (per unit depth) [m].
   double surface_height() const {
-    const auto& g = solver.grid();
-    double v = 0.0;
-    for (std::size_t c = 0; c < g.cell_count(); ++c) v += solver.cells().volume_fraction[c] * g.cell_volume(c);
-    const double section = g.axisymmetric() ? 0.5 * ((r0 + kRadius) * (r0 + kRadius) - r0 * r0) : kRadius;
-    return v / section;
+    const double section = solver.grid().axisymmetric() ? 0.5 * ((r0 + kRadius) * (r0 + kRadius) - r0 * r0) : kRadius;
+    return material_volume() / section;
   }
   // The settled bulk density: mass over material volume [kg/m^3].
-  double bulk_density() const {
-    const auto& g = solver.grid();
-    double v = 0.0;
-    for (std::size_t c = 0; c < g.cell_count(); ++c) v += solver.cells().volume_fraction[c] * g.cell_volume(c);
-    return solver.total_mass() / v;
-  }
+  double bulk_density() const { return solver.total_mass() / material_volume(); }
   double depth_of_row(int j) const { return surface_height() - (j + 0.5) * solver.grid().cell_size; }
 };
 
