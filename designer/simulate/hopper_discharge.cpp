@@ -56,7 +56,8 @@ std::string HopperDischarge::stop_reason(const Rows& rows) const {
   }
   if (s == DischargeState::emptied) return "the hopper has emptied";
   const SteadyRate r = steady_rate(rows);
-  if (r.found && r.batches >= kConvergedBatches && r.high - r.low < 2.0 * kConvergedHalfWidth * r.rate)
+  const bool long_enough = !rows.time.empty() && rows.time.back() - opening >= earliest_convergence;
+  if (r.found && long_enough && r.batches >= kConvergedBatches && r.high - r.low < 2.0 * kConvergedHalfWidth * r.rate)
     return "converged: the steady rate's 95 % interval is within +-5 %";
   return "";
 }

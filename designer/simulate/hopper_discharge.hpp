@@ -20,6 +20,9 @@ struct HopperDischarge {
   double trickle_rate = 0.0;   // [kg/s] of the simulated section
   std::string scale_rate = "rho_b W sqrt(g W)";  // the outlet's scale rate in words (a slot's)
   double fill_mass = 0.0;      // [kg] in the simulated section at the opening
+  // "converged" is not said before this long after the opening [s] (the CEL cone's rate still
+  // climbs for about a second after it; 0: whenever the interval is narrow enough).
+  double earliest_convergence = 0.0;
   ArchCriterion arch{};
 
   // One cumulative discharge: times and masses of the rows after the opening, with the state

@@ -76,5 +76,17 @@ TEST(HopperDischarge, OneArchingRuleForBothRungs) {
   EXPECT_NE(d.stop_reason(discharge(0.0, 0.0, 1.5, 3.0, 0.6)).find("arched"), std::string::npos);
 }
 
+// A steady discharge converges after 1.5 s of rows; with the earliest convergence at 2 s after
+// the opening (the CEL cone's) it does not stop at 1.5 s and does at 2.5 s, on either time axis.
+TEST(HopperDischarge, EarliestConvergenceHoldsTheStopBack) {
+  for (double opening : {0.0, 1.37}) {
+    HopperDischarge d = rule(opening);
+    EXPECT_NE(d.stop_reason(discharge(opening, 0.0, 1.5, 1.5, 0.0)).find("converged"), std::string::npos);
+    d.earliest_convergence = 2.0;
+    EXPECT_EQ(d.stop_reason(discharge(opening, 0.0, 1.5, 1.5, 0.0)), "");
+    EXPECT_NE(d.stop_reason(discharge(opening, 0.0, 1.5, 2.5, 0.0)).find("converged"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace feedflow
