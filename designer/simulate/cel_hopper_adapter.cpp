@@ -144,8 +144,8 @@ class CelHopperAdapter final : public CelSceneAdapter {
                              "rat-holes) are not represented. The flow pattern on this grid is not validated: it reads "
                              "funnel flow (a stagnant band at the wall) in the pilot cone at 10-25 deg with 8.5 deg walls, "
                              "where the Arnold-McLean limit (39.6 deg) and the DEM (mass flow to about 45 deg) read mass flow: "
-                             "the hoop compression of material moving in along the wall offsets the law's shear dilation, "
-                             "and the wall band stays dense and still.")
+                             "the wall band stays dense and still, which an element test of the law under the same shear "
+                             "and hoop rates does not (it dilates), so a discretisation effect is suspected.")
         : std::string(section_ == cel::HopperSection::full
                         ? "Plane strain full-width section, both walls ([cel] hopper_section = "
                           "full): the rate per metre is "
