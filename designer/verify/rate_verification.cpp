@@ -152,17 +152,7 @@ void apply_rate_verification(const Case& c, const RateVerification& v, DesignRec
   verified.display_unit = reduced.display_unit;
   it->second = verified;
   record.results.emplace(it + 1, reduced_model_key("mass_flow_rate"), reduced);
-  // The axisymmetric CEL cone reads funnel flow where theory and the DEM read mass flow (issue 22):
-  // until that is understood its flow pattern does not replace the reduced one.
-  const Hopper* hopper = std::get_if<Hopper>(&c.equipment);
-  const bool cone = hopper && !hopper->is_wedge();
-  const std::string pattern_note =
-      !cone ? verify_flow_pattern(v, record.results)
-      : v.flow_pattern.empty()
-          ? std::string()
-          : "flow pattern not verified on the continuum rung: the axisymmetric CEL reads " + v.flow_pattern +
-                " flow, but its cone flow pattern is not validated (it reads funnel flow at 10-25 deg where the "
-                "Arnold-McLean limit and the DEM read mass flow); the reduced pattern stands";
+  const std::string pattern_note = verify_flow_pattern(v, record.results);
   const double value = std::get<double>(reduced.value);
   // Verified when the reduced band and the CEL interval overlap: the two agree within what each knows.
   const double lo = *v.reference.value - v.reference.error_bar.value_or(0.0);

@@ -1,5 +1,7 @@
 #include "fullsim/cel/cel_fields.hpp"
 
+#include <algorithm>
+
 namespace feedflow::cel {
 
 void CellFields::resize(std::size_t cells) {
@@ -11,6 +13,14 @@ void CellFields::resize(std::size_t cells) {
   wave_speed.assign(cells, 0.0);
   volume_rate.assign(cells, 0.0);
   corner_force.assign(cells * kNodesPerCell, NodeVector::Zero());
+}
+
+bool at_staircase(const CelGrid& g, const CellFields& cells, std::size_t c) {
+  const int i = g.cell_i(c), j = g.cell_j(c);
+  for (int jj = std::max(j - 1, 0); jj <= std::min(j + 1, g.ny - 1); ++jj)
+    for (int ii = std::max(i - 1, 0); ii <= std::min(i + 1, g.nx - 1); ++ii)
+      if (cells.solid[g.cell(ii, jj)]) return true;
+  return false;
 }
 
 void NodeFields::resize(std::size_t nodes) {

@@ -33,6 +33,9 @@ struct CellFields {
   }
 };
 
+// Whether cell c touches a solid cell across a face or a corner: a cell at a wall's staircase.
+bool at_staircase(const CelGrid& grid, const CellFields& cells, std::size_t c);
+
 // Kinematic constraint of a node: which velocity components are prescribed (to zero).
 enum class NodeConstraint : std::uint8_t { free = 0, fixed_x = 1, fixed_y = 2, fixed = 3 };
 

@@ -55,8 +55,10 @@ CellUpdateReport update_cell_states(const CelGrid& grid,
     const Eigen::Matrix3d w = 0.5 * (l - l.transpose());
     cells.volume_rate[c] = d.trace();
     MaterialPointState s{cells.stress[c], cells.void_ratio[c]};
-    const Eigen::Matrix3d dm =
-        material_rate_of_deformation(d, cells.volume_fraction[c], dt, rule);
+    const double vf = cells.volume_fraction[c];
+    const MixedCellRule cell_rule =
+        vf < kNearlyEmpty && at_staircase(grid, cells, c) ? MixedCellRule::void_first : rule;
+    const Eigen::Matrix3d dm = material_rate_of_deformation(d, vf, dt, cell_rule);
     const StepReport r = integrate_material_point(model, s, dm, w, dt, substepping);
     cells.stress[c] = s.stress;
     cells.void_ratio[c] = s.void_ratio;

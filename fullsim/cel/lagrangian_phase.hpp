@@ -7,7 +7,9 @@
 // fraction of the Lagrangian cell is unchanged), or void first (the void takes the cell's
 // volume change: the material is sheared at the cell's deviatoric rate and compressed only once
 // the void has closed, so a free-surface cell neither inflates nor compacts by the grid motion
-// around it).
+// around it). A nearly empty cell (vf < kNearlyEmpty) at a wall's staircase is void first under
+// either rule: a speck of material there is not squeezed by the cell's motion to the densest
+// state and its stiffness, which shrank the step below 1e-9 s in the drum.
 #include <cstddef>
 #include <vector>
 
@@ -23,6 +25,7 @@ inline constexpr double kVoidNodeMassFraction = 1e-6;
 NodeVector advance_node_velocities(double average_dt, double void_node_mass, NodeFields& nodes);
 
 enum class MixedCellRule { equal_strain_rate, void_first };
+inline constexpr double kNearlyEmpty = 1e-3;  // at a staircase the void goes first below this vf
 
 // The in-plane rate of deformation the material of a cell with volume fraction vf takes from
 // the cell's d over dt under `rule`.

@@ -336,10 +336,10 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
   // Per cell in parallel; the cut-off mass is summed afterwards in cell order (the same bits
   // on any number of threads).
   double largest = 0.0, smallest = 1.0;
-  int compacted = 0, overpacked = 0;
+  int compacted = 0, overpacked = 0, wall_overfilled = 0;
   cut_off_.assign(n, 0.0);
 #pragma omp parallel for schedule(static) reduction(max : largest) reduction(min : smallest) \
-    reduction(+ : compacted, overpacked) if (cells_n > kParallelThreshold)
+    reduction(+ : compacted, overpacked, wall_overfilled) if (cells_n > kParallelThreshold)
   for (long k = 0; k < cells_n; ++k) {
     const auto c = static_cast<std::size_t>(k);
     const double vm = now_.material_volume[c];
@@ -361,7 +361,9 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
     cells.mass[c] = now_.mass[c];
     cells.stress[c] = now_.stress_volume[c] / vm;
     cells.void_ratio[c] = now_.void_mass[c] / now_.mass[c];
-    if (grain_density_ > 0.0 && vf > 1.0) {  // does not fit: packed to fill the cell
+    if (grain_density_ > 0.0 && vf > 1.0 && at_staircase(g, cells, c)) {
+      ++wall_overfilled;  // a staircase artefact: keeps its void ratio, exports the excess
+    } else if (grain_density_ > 0.0 && vf > 1.0) {  // does not fit: packed to fill the cell
       const double fit = grain_density_ * v0 / now_.mass[c] - 1.0;
       const double densest = densest_.void_ratio(cells.stress[c]);
       cells.void_ratio[c] = std::max(fit, densest);
@@ -373,6 +375,7 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
   report.smallest_volume_fraction = smallest;
   report.compacted_cells = compacted;
   report.overpacked_cells = overpacked;
+  report.wall_overfilled_cells = wall_overfilled;
   for (double m : cut_off_) report.removed_mass += m;
 
   lump_nodal_mass(g, cells, nodes);

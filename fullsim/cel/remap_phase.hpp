@@ -33,9 +33,16 @@
 // its void ratio is lowered until it fits (`RemapReport::compacted_cells`), but not below the
 // densest state the law allows at its pressure, e_d0 exp(-(-tr T / h_s)^n) (`DensestState`):
 // a cell that would need more keeps that void ratio with vf = 1 and a density above rho_g /
-// (1 + e) (`RemapReport::overpacked_cells`; cut cells at walls inclined to the grid, whose lower
-// face the staircase shuts, fill up so). Without a grain density the material volume is vf V^L
-// and an overfilled cell keeps its mass with a higher density.
+// (1 + e) (`RemapReport::overpacked_cells`). Cells at a wall's staircase (touching a solid cell
+// across a face or a corner) are not compacted: their nodes carry the material along the wall,
+// across the step's shut faces and into the cut cells' parts inside the wall, but the shut faces
+// carry no flux and a cut cell counts its whole volume, so such cells fill up with material that
+// is on its way past the step, not denser. They keep their void ratio with vf = 1 and a material
+// volume above the cell's, which their next fluxes export (a donor gives vf dV with vf > 1)
+// (`RemapReport::wall_overfilled_cells`). Compacting them instead turned a cone's staircase,
+// where the hoop rate adds to the inflow, into a dense stagnant wall band
+// (funnel flow at 10-25 deg). Without a grain density the material volume is vf V^L and an
+// overfilled cell keeps its mass with a higher density.
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +80,7 @@ struct RemapReport {
   double smallest_volume_fraction = 0.0;  // of the remapped cells, before the cut [-]
   int compacted_cells = 0;   // grain-consistent: overfilled cells whose void ratio was lowered
   int overpacked_cells = 0;  // of those, cells at the densest state with rho > rho_g / (1 + e)
+  int wall_overfilled_cells = 0;  // at a staircase step: overfilled, void ratio kept
 };
 
 // The densest void ratio of the law at a stress: e_d0 exp(-(-tr T / h_s)^n) (Bauer).

@@ -4,8 +4,10 @@
 // wall than the contact distance d_c loses the velocity component into the wall (relative to the
 // wall's own velocity); the tangential component sticks if |v_t| <= mu |v_n| and is otherwise
 // reduced by mu |v_n| (no slip: always sticks). The wall reaction m (v* - v) / dt is booked per
-// wall. Cells whose four corners all lie inside the walls are solid (no material, no transport);
-// cut cells hold material. No penalty parameter, no time-step restriction.
+// wall. Empty cells whose centre (or all four corners) lies inside the walls are solid (no
+// material, no transport): the staircase of cell centres, as the fill places material (cells
+// whose centre is inside a wall get none). Cut cells with their centre outside hold material; a
+// sliver (a cell mostly inside a wall) never does. No penalty parameter, no time-step restriction.
 #include <cstddef>
 #include <vector>
 
@@ -31,8 +33,8 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
                                            const WallContactOptions& options, double dt,
                                            double void_node_mass, NodeFields& nodes);
 
-// Marks empty cells whose corners are all inside the walls kSolidInsideWall and releases
-// wall cells no longer inside (moved or removed walls); kSolidFixed cells stay.
+// Marks empty cells whose centre or all four corners are inside the walls kSolidInsideWall and
+// releases wall cells no longer inside (moved or removed walls); kSolidFixed cells stay.
 void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells);
 

@@ -9,6 +9,7 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/rate_verification.hpp"
+#include "reports/result_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -85,29 +86,38 @@ TEST(RateVerification, AgreementIsTheOverlapOfBandAndInterval) {
   EXPECT_TRUE(said(contradicted, "mass flow rate contradicted"));
 }
 
-// On a cone the CEL rate stands (rung L2) but its flow pattern does not replace the reduced one:
-// the axisymmetric grid's cone pattern is not validated (it reads funnel where theory reads
-// mass), and the verdict says so with the CEL's reading.
-TEST(RateVerification, ConeKeepsTheReducedFlowPattern) {
+// On a cone the CEL rate and flow pattern replace the reduced ones, as on a wedge: the
+// axisymmetric grid brackets the pilot cone's mass/funnel boundary (mass at 30 deg, funnel at
+// 45 deg against Arnold-McLean's 39.6 deg). A CEL reading of funnel flow where the reduced
+// rung reads mass flow is a contradiction, said with the CEL's reading; the reduced pattern
+// stays beside it.
+TEST(RateVerification, ConeFlowPatternIsVerifiedLikeTheWedges) {
   const Case c = load_case("cases/conical_hopper.toml");
   const DesignRecord design = design_check(c);
-  RateVerification v;
-  v.reference.value = 0.64;
-  v.reference.error_bar = 0.02;
-  v.reference.source = "test";
-  v.flow_pattern = "funnel";
-  DesignRecord verified = design;
-  apply_rate_verification(c, v, verified);
-  EXPECT_EQ(find_estimate(verified.results, "mass_flow_rate")->rung, Rung::L2);
-  const Estimate* pattern = find_estimate(verified.results, "flow_pattern");
-  ASSERT_NE(pattern, nullptr);
-  EXPECT_EQ(pattern->rung, Rung::L0);
-  EXPECT_EQ(std::get<std::string>(pattern->value), "mass");
-  bool said = false;
-  for (const auto& x : verified.verdict.reasons)
-    said = said || x.find("flow pattern not verified on the continuum rung: the axisymmetric CEL reads funnel") !=
-                       std::string::npos;
-  EXPECT_TRUE(said);
+  ASSERT_EQ(std::get<std::string>(find_estimate(design.results, "flow_pattern")->value), "mass");
+  for (const std::string cel : {"mass", "funnel"}) {
+    RateVerification v;
+    v.reference.value = 0.56;
+    v.reference.error_bar = 0.02;
+    v.reference.source = "test";
+    v.flow_pattern = cel;
+    v.flow_pattern_model = "CEL-FEM axisymmetric";
+    DesignRecord verified = design;
+    apply_rate_verification(c, v, verified);
+    EXPECT_EQ(find_estimate(verified.results, "mass_flow_rate")->rung, Rung::L2);
+    const Estimate* pattern = find_estimate(verified.results, "flow_pattern");
+    ASSERT_NE(pattern, nullptr);
+    EXPECT_EQ(pattern->rung, Rung::L2);
+    EXPECT_EQ(std::get<std::string>(pattern->value), cel);
+    const Estimate* reduced = find_estimate(verified.results, reduced_model_key("flow_pattern"));
+    ASSERT_NE(reduced, nullptr);
+    EXPECT_EQ(std::get<std::string>(reduced->value), "mass");
+    const std::string expected = cel == "mass" ? "flow pattern verified on the continuum rung: reduced mass, CEL mass"
+                                               : "flow pattern contradicted on the continuum rung: reduced mass, CEL funnel";
+    bool said = false;
+    for (const auto& x : verified.verdict.reasons) said = said || x.find(expected) != std::string::npos;
+    EXPECT_TRUE(said) << cel;
+  }
 }
 
 }  // namespace

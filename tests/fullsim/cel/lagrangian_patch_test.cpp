@@ -105,5 +105,31 @@ TEST(CelMixedCells, VoidTakesTheVolumeChangeFirst) {
   EXPECT_NEAR(vf * (1.0 + (m(0, 0) + m(1, 1)) * dt), 1.0 + shrink * dt, 1e-12);
 }
 
+// A speck of material (vf < kNearlyEmpty) in a cell at a wall's staircase is void first under
+// the equal-strain-rate rule: squeezed by its cell it keeps its void ratio (no volume change of
+// the material). A speck away from walls, and a fuller cell at the wall, take the cell's rate
+// and compact.
+TEST(CelMixedCells, SpeckAtAWallIsVoidFirst) {
+  Patch p;
+  p.cells.solid[p.grid.cell(0, 0)] = kSolidInsideWall;
+  p.cells.mass[p.grid.cell(0, 0)] = p.cells.volume_fraction[p.grid.cell(0, 0)] = 0.0;
+  const std::size_t wall_speck = p.grid.cell(1, 1), free_speck = p.grid.cell(3, 2), wall_full = p.grid.cell(1, 0);
+  for (std::size_t c : {wall_speck, free_speck}) p.cells.volume_fraction[c] = 0.5 * kNearlyEmpty;
+  for (std::size_t c = 0; c < p.grid.cell_count(); ++c) {
+    p.cells.void_ratio[c] = 0.8;
+    p.cells.stress[c] = -100.0 * Eigen::Matrix3d::Identity();
+  }
+  for (std::size_t a = 0; a < p.grid.node_count(); ++a)
+    p.nodes.velocity[a] = -2.0 * p.grid.node_position(a);  // uniform compression, tr D = -4 /s
+  std::vector<std::size_t> active;
+  for (std::size_t c : p.active)
+    if (!p.cells.solid[c]) active.push_back(c);
+  update_cell_states(p.grid, active, make_hypoplastic_model(loblolly_pine_table1()), SubsteppingOptions{},
+                     MixedCellRule::equal_strain_rate, 1e-4, p.nodes, p.cells);
+  EXPECT_DOUBLE_EQ(p.cells.void_ratio[wall_speck], 0.8);
+  EXPECT_NEAR(p.cells.void_ratio[free_speck], 0.8 - 1.8 * 4.0 * 1e-4, 1e-6);
+  EXPECT_NEAR(p.cells.void_ratio[wall_full], 0.8 - 1.8 * 4.0 * 1e-4, 1e-6);
+}
+
 }  // namespace
 }  // namespace feedflow::cel

@@ -8,6 +8,8 @@
 #include <omp.h>
 
 #include "fullsim/cel/cel_solver.hpp"
+#include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/remap_phase.hpp"
 
 namespace feedflow::cel {
 namespace {
@@ -114,6 +116,56 @@ TEST(CelRemap, DensityFollowsTheVoidRatio) {
     EXPECT_GT(mixed, 5);  // the collapse has a free surface to get wrong
     EXPECT_LT(worst, 1e-12);
   }
+}
+
+// A cell at a wall's staircase that fills up is not compacted, an interior one is. Pine falls
+// at 0.5 m/s onto a solid cell (a step of a wall) and onto the closed bottom of the box. The
+// column above the step overfills its cell by 5 % in one remap, as does the column on the box
+// floor. The cells touching the solid cell keep their void ratio 0.7 and carry the excess (they
+// export it with their next fluxes), while the cell on the floor is packed until it fits (its
+// density rho_g / (1 + e) again).
+// Mass is kept either way.
+TEST(CelRemap, StaircaseCellsAreNotCompacted) {
+  const CelGrid g = make_plane_strain_grid(4, 3, 0.01);
+  CellFields cells;
+  NodeFields nodes;
+  cells.resize(g.cell_count());
+  nodes.resize(g.node_count());
+  const double rho = 290.0, e = 0.7;
+  double m0 = 0.0;
+  for (std::size_t c = 0; c < g.cell_count(); ++c) {
+    if (g.cell_i(c) == 1 && g.cell_j(c) == 0) {
+      cells.solid[c] = kSolidInsideWall;
+      continue;
+    }
+    cells.volume_fraction[c] = 1.0;
+    cells.mass[c] = rho * g.cell_volume(c);
+    cells.void_ratio[c] = e;
+    cells.stress[c] = -100.0 * Eigen::Matrix3d::Identity();
+    m0 += cells.mass[c];
+  }
+  lump_nodal_mass(g, cells, nodes);
+  for (auto& v : nodes.velocity) v = NodeVector(0.0, -0.5);
+  RemapPhase remap;
+  remap.set_grain_density(rho * (1.0 + e), DensestState{0.50, 187.6e3, 0.30});
+  const BoxWalls closed{WallCondition::free_slip, WallCondition::free_slip, WallCondition::free_slip,
+                        WallCondition::free_slip};
+  const RemapReport r = remap.remap(g, closed, 1e-3, true, 0.0, cells, nodes);
+  const auto at = [&](int i, int j) { return g.cell(i, j); };
+  // (1, 1) above the step and (0, 0), (2, 0) beside it; (3, 0) on the box floor.
+  for (auto c : {at(1, 1), at(0, 0), at(2, 0)}) {
+    EXPECT_DOUBLE_EQ(cells.void_ratio[c], e);
+    EXPECT_GT(cells.mass[c] / (rho * g.cell_volume(c)), 1.04);
+  }
+  const std::size_t floor = at(3, 0);
+  EXPECT_GT(cells.mass[floor] / (rho * g.cell_volume(floor)), 1.04);
+  EXPECT_NEAR(cells.void_ratio[floor], rho * (1.0 + e) * g.cell_volume(floor) / cells.mass[floor] - 1.0, 1e-12);
+  EXPECT_LT(cells.void_ratio[floor], 0.65);
+  EXPECT_EQ(r.wall_overfilled_cells, 3);
+  EXPECT_EQ(r.compacted_cells, 1);
+  double m = 0.0;
+  for (double x : cells.mass) m += x;
+  EXPECT_NEAR(m / m0, 1.0, 1e-14);
 }
 
 // The cell, node and remap loops run on OpenMP threads above kParallelThreshold items; each
