@@ -176,7 +176,7 @@ TEST(CelInclinedWall, MovingNoSlipBeltCarriesSlab) {
 
 // The staircase of an inclined wall is the cell centres': an empty cell whose centre lies inside
 // the wall is solid even with a corner outside (a sliver takes no material), one whose centre is
-// outside stays open even with three corners inside, and a cell holding material is never solid.
+// outside stays open even with two corners inside, and a cell holding material is never solid.
 TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreInside) {
   const CelGrid g = make_plane_strain_grid(4, 4, kCell);
   // Material above the line y = 0.5 x + 0.012 (normal (-0.5, 1) / |.|).
