@@ -59,9 +59,10 @@ void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells) {
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     if (cells.solid[c] == kSolidFixed) continue;
-    // An empty cell whose centre is inside the walls, or all of whose corners are.
+    // An empty cell whose centre is a quarter cell or more inside the walls, or all of whose
+    // corners are.
     bool inside = !walls.empty() && cells.mass[c] <= 0.0;
-    if (inside && distance_to_walls(walls, grid.cell_centre(c)) >= 0.0)
+    if (inside && distance_to_walls(walls, grid.cell_centre(c)) > -kWallCellCentreDepth * grid.cell_size)
       for (std::size_t a : grid.cell_nodes(c)) {
         if (!inside) break;
         inside = distance_to_walls(walls, grid.node_position(a)) <= 0.0;

@@ -174,33 +174,36 @@ TEST(CelInclinedWall, MovingNoSlipBeltCarriesSlab) {
   EXPECT_NEAR(u / 0.2, 1.0, 0.02);
 }
 
-// The staircase of an inclined wall is the cell centres': an empty cell whose centre lies inside
-// the wall is solid even with a corner outside (a sliver takes no material), one whose centre is
-// outside stays open even with two corners inside, and a cell holding material is never solid.
-TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreInside) {
+// The staircase of an inclined wall is the cell centres': an empty cell whose centre lies a
+// quarter cell or more inside the wall is solid even with a corner outside (a sliver takes no
+// material), one whose centre is less deep inside stays open (the wedge's outlet corner), and a
+// cell holding material is never solid.
+TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreAQuarterCellInside) {
   const CelGrid g = make_plane_strain_grid(4, 4, kCell);
-  // Material above the line y = 0.5 x + 0.012 (normal (-0.5, 1) / |.|).
-  const RigidWall wall = make_half_plane_wall({0.0, 0.012}, NodeVector(-0.5, 1.0).normalized());
+  // Material above the line y = 0.5 x + 0.009 (normal (-0.5, 1) / |.|).
+  const RigidWall wall = make_half_plane_wall({0.0, 0.009}, NodeVector(-0.5, 1.0).normalized());
   const std::vector<PlacedWall> walls = {PlacedWall(wall, 0.0)};
   CellFields cells;
   cells.resize(g.cell_count());
-  cells.mass[g.cell(0, 0)] = 1.0;  // holds material although its centre is inside
+  cells.mass[g.cell(0, 0)] = 1.0;  // holds material although its centre is deep inside
   mark_wall_cells(g, walls, cells);
   for (std::size_t c = 0; c < g.cell_count(); ++c) {
     const double d = distance_to_walls(walls, g.cell_centre(c));
-    const bool expected = d < 0.0 && cells.mass[c] <= 0.0;
+    const bool expected = d <= -kWallCellCentreDepth * kCell && cells.mass[c] <= 0.0;
     EXPECT_EQ(cells.solid[c] != 0, expected) << "cell " << g.cell_i(c) << ", " << g.cell_j(c) << " d " << d;
   }
-  // Cell (1, 1): its centre (15, 15 mm) inside (the line is at 19.5 mm there), its corner
-  // (10, 20) outside. Cell (2, 2): its centre (25, 25) outside (line at 24.5), its corners
-  // (20, 20) and (30, 20) inside.
-  EXPECT_LT(distance_to_walls(walls, g.cell_centre(g.cell(1, 1))), 0.0);
-  EXPECT_GT(distance_to_walls(walls, {0.01, 0.02}), 0.0);
-  EXPECT_EQ(cells.solid[g.cell(1, 1)], kSolidInsideWall);
-  EXPECT_GT(distance_to_walls(walls, g.cell_centre(g.cell(2, 2))), 0.0);
-  EXPECT_LT(distance_to_walls(walls, {0.02, 0.02}), 0.0);
-  EXPECT_LT(distance_to_walls(walls, {0.03, 0.02}), 0.0);
-  EXPECT_EQ(cells.solid[g.cell(2, 2)], 0);
+  // Cell (2, 1): its centre (25, 15 mm) 5.8 mm inside (the line is at 21.5 mm there), its corner
+  // (20, 20) outside: solid.
+  EXPECT_LT(distance_to_walls(walls, g.cell_centre(g.cell(2, 1))), -0.5 * kCell);
+  EXPECT_GT(distance_to_walls(walls, {0.02, 0.02}), 0.0);
+  EXPECT_EQ(cells.solid[g.cell(2, 1)], kSolidInsideWall);
+  // Cell (1, 1): its centre (15, 15) 1.3 mm inside (line at 16.5), two corners inside: open.
+  const double shallow = distance_to_walls(walls, g.cell_centre(g.cell(1, 1)));
+  EXPECT_LT(shallow, 0.0);
+  EXPECT_GT(shallow, -kWallCellCentreDepth * kCell);
+  EXPECT_LT(distance_to_walls(walls, {0.01, 0.01}), 0.0);
+  EXPECT_LT(distance_to_walls(walls, {0.02, 0.01}), 0.0);
+  EXPECT_EQ(cells.solid[g.cell(1, 1)], 0);
   EXPECT_EQ(cells.solid[g.cell(0, 0)], 0);
 }
 
