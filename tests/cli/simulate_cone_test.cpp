@@ -82,7 +82,7 @@ TEST_F(SimulateCone, QuarterConeDischargesAtBeverloosRateInMassFlow) {
 
 // Beverloo's law on the particle rung with the seed's grains (rolling friction 0.8), in a hopper
 // wide and deep enough that the outlet alone sets the rate (bin 0.24 m, filled 0.35 m above the
-// apex: the outlet at least 2.3 diameters below the surface): W = C rho_b sqrt(g) (D - k d)^2.5
+// apex: the outlet at least 2.8 diameters below the surface): W = C rho_b sqrt(g) (D - k d)^2.5
 // fitted over five outlets (D/d = 8-16) as W^0.4 linear in D, rho_b the bed's own density, gives
 // C within the published 0.55-0.65 (Beverloo, Leniger & van de Velde 1961; Nedderman 1992,
 // ch. 10) and k above the 1.3-1.5 of smooth spheres: the rolling resistance stands in for the
