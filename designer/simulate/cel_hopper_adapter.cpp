@@ -142,10 +142,10 @@ class CelHopperAdapter final : public CelSceneAdapter {
                              "r-weighted volumes in the remap, the circular outlet on the axis; the rate per radian "
                              "is multiplied by 2 pi. Swirl and flow off the axis' symmetry (asymmetric arches, "
                              "rat-holes) are not represented. The mass/funnel boundary on this grid: the pilot cone "
-                             "(8.5 deg walls, 10 mm cells) is in mass flow at 30 deg, marginal at 35-40 deg (the wall "
-                             "moves at about a tenth of the centre line) and in funnel flow from 45 deg, about the "
-                             "Arnold-McLean limit (39.6 deg) and the DEM's (about 45 deg); a reading within 5 deg of "
-                             "the limit is uncertain.")
+                             "(8.5 deg walls, 10 mm cells) is in mass flow at 20-30 deg and in funnel flow from 45 deg, "
+                             "about the Arnold-McLean limit (39.6 deg) and the DEM's (about 45 deg); at 40 deg cut cells "
+                             "at the wall slide faster than the centre line (a staircase artefact), so a reading within "
+                             "5 deg of the limit is uncertain.")
         : std::string(section_ == cel::HopperSection::full
                         ? "Plane strain full-width section, both walls ([cel] hopper_section = "
                           "full): the rate per metre is "
