@@ -4,7 +4,7 @@
 # best and the median particle-steps per second of each run. On a shared machine noise only slows
 # a run down, so best and median of alternated runs compare builds where single runs cannot.
 #   tests/benchmarks/compare_builds.sh ROUNDS LAW BENCHMARK_BINARY...
-#   tests/benchmarks/compare_builds.sh 3 1 /tmp/old/feedflow_benchmarks build/tests/feedflow_benchmarks
+#   tests/benchmarks/compare_builds.sh 3 1 OLD/feedflow_benchmarks build/tests/feedflow_benchmarks  # OLD: another build
 # LAW: 0 hertz + mindlin + cdt, 1 hysteretic_nonlinear2 + history + cdt (dem_bench.cpp).
 set -eu
 if [ $# -lt 3 ]; then
