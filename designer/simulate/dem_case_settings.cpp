@@ -38,14 +38,15 @@ SlabFaces slab_faces_of(const Case& c) {
   const auto faces = slab_faces_from_keyword(c.dem.slab_faces);
   if (!faces)
     throw InputError(c.file, "dem.slab_faces",
-                     "\"frictional\", \"frictionless\" or \"periodic\", not \"" + c.dem.slab_faces +
+                     "\"frictional\", \"frictionless\", \"periodic\" or \"planar\", not \"" + c.dem.slab_faces +
                          "\"");
   return *faces;
 }
 
 void require_periodic_faces(const Case& c, const std::string& scene) {
   const SlabFaces faces = slab_faces_of(c);
-  if (faces == SlabFaces::frictional || faces == SlabFaces::frictionless)
+  if (faces == SlabFaces::frictional || faces == SlabFaces::frictionless ||
+      faces == SlabFaces::planar)
     throw InputError(c.file, "dem.slab_faces",
                      "the DEM " + scene +
                          " slab is periodic (its walls are the scene's own); \"periodic\" "

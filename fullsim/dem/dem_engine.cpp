@@ -110,8 +110,21 @@ void DemEngine::add_mesh_wall(MeshWall mesh) {
 
 void DemEngine::set_outlet_sink(OutletSink sink) { sink_ = std::move(sink); }
 
+void DemEngine::hold_in_plane(int axis) {
+  if (axis < 0 || axis > 2) throw std::invalid_argument("hold_in_plane: the axis is 0, 1 or 2");
+  linear_free_ = Vec3::Ones();
+  linear_free_[axis] = 0.0;
+  angular_free_ = Vec3::Zero();
+  angular_free_[axis] = 1.0;
+  for (std::size_t i = 0; i < particles_.size(); ++i) {  // those already in the store
+    particles_.velocity[i] = particles_.velocity[i].cwiseProduct(linear_free_);
+    particles_.angular_velocity[i] = particles_.angular_velocity[i].cwiseProduct(angular_free_);
+  }
+}
+
 std::uint32_t DemEngine::insert_particle(const Vec3& x, double radius, double density,
-                                         double layer, const Vec3& velocity) {
+                                         double layer, const Vec3& given_velocity) {
+  const Vec3 velocity = given_velocity.cwiseProduct(linear_free_);  // in the held plane, if any
   if (prepared_ && shared()) {
     // Every rank inserts the same particle, so the ids stay alike; the owner of its position
     // keeps it behind its own particles (the ghosts dropped until the next step's rebuild),
@@ -422,6 +435,7 @@ void DemEngine::one_step(bool last) {
   // the weight, and the largest displacement since the last rebuild is taken on the way.
   // Per particle the operations and their order are those of two separate passes.
   const bool finish_before = kick_pending_;
+  const Vec3 linear = linear_free_, angular = angular_free_;
   double moved2 = 0.0, kinetic = 0.0, gravity_work = 0.0;
   {
     auto scope = report_.time("integration");
@@ -432,13 +446,13 @@ void DemEngine::one_step(bool last) {
     for (std::size_t i = 0; i < n; ++i) {
       if (finish_before) {
         gravity_work += dt * p.mass[i] * g.dot(p.velocity[i]);  // at the half step
-        p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
-        p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
+        p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i].cwiseProduct(linear);
+        p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i].cwiseProduct(angular);
         kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
                    0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
       }
-      p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
-      p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
+      p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i].cwiseProduct(linear);
+      p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i].cwiseProduct(angular);
       p.position[i] += dt * p.velocity[i];
       p.force[i] = p.mass[i] * g;
       p.torque[i].setZero();
@@ -503,12 +517,13 @@ void DemEngine::finish_kick() {
   {
     auto scope = report_.time("integration");
     const Vec3 g = settings_.gravity;
+    const Vec3 linear = linear_free_, angular = angular_free_;
 #pragma omp parallel for schedule(static) reduction(+ : kinetic, gravity_work) \
     if (m >= settings_.parallel_from)
     for (std::size_t i = 0; i < m; ++i) {
       gravity_work += dt * p.mass[i] * g.dot(p.velocity[i]);  // at the half step
-      p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i];
-      p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i];
+      p.velocity[i] += (0.5 * dt / p.mass[i]) * p.force[i].cwiseProduct(linear);
+      p.angular_velocity[i] += (0.5 * dt / p.inertia[i]) * p.torque[i].cwiseProduct(angular);
       kinetic += 0.5 * p.mass[i] * p.velocity[i].squaredNorm() +
                  0.5 * p.inertia[i] * p.angular_velocity[i].squaredNorm();
     }

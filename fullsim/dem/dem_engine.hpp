@@ -83,6 +83,15 @@ class DemEngine final : public Stepper {
   // A triangle-mesh wall (e.g. MeshWall("hopper", read_stl("hopper.stl", 1e-3))).
   void add_mesh_wall(MeshWall mesh);
   void set_outlet_sink(OutletSink sink);
+  // Holds every particle in the plane through its centre normal to `axis` (0: x, 1: y, 2: z):
+  // no force or velocity along the axis, torque and spin about it only. A one-layer slab whose
+  // centres must stay in its mid-plane: without the hold, any round-off across the slab grows
+  // (a compressed layer buckles) until the grains press on the faces. The kicks take the
+  // forces and torques component by component times 1 or 0, so a run without the hold keeps
+  // its bits. Set with the walls (a restored run's engine is built the same way); the
+  // velocities of the particles already in the store are projected at once.
+  void hold_in_plane(int axis);
+  bool holds_in_plane() const { return linear_free_ != Vec3::Ones(); }
 
   // Filling and trimming between steps (rain-fall insertion, fullsim/dem/scene/): a particle
   // added to a prepared run has its kinetic energy booked with the blow-up guard; after either
@@ -250,6 +259,9 @@ class DemEngine final : public Stepper {
   RankDomains domains_;
   HaloExchange halo_;
   std::size_t rebalances_ = 0;
+  // 1 for a free component, 0 for one the plane hold removes (hold_in_plane).
+  Vec3 linear_free_ = Vec3::Ones();
+  Vec3 angular_free_ = Vec3::Ones();
 };
 
 }  // namespace feedflow

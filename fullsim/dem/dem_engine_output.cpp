@@ -110,9 +110,12 @@ void DemEngine::write_checkpoint(Hdf5File& file) const { write_dem_checkpoint(fi
 void DemEngine::restore(const Hdf5File& file) {
   std::vector<MeshWall> meshes = std::move(meshes_);
   SceneOutline outline = std::move(outline_);
+  const Vec3 linear = linear_free_, angular = angular_free_;  // the plane hold, if any
   *this = DemEngine(settings_, read_dem_checkpoint(file));
   meshes_ = std::move(meshes);
   outline_ = std::move(outline);
+  linear_free_ = linear;
+  angular_free_ = angular;
 }
 
 }  // namespace feedflow

@@ -49,6 +49,12 @@ std::string DemEngine::make_plan() const {
   s << "  " << (sink_ ? sink_->describe() : std::string("outlet sink: none")) << '\n';
   s << format("  gravity: (%.4g, %.4g, %.4g) m/s^2\n", settings_.gravity.x(),
               settings_.gravity.y(), settings_.gravity.z());
+  if (holds_in_plane()) {
+    const int axis = linear_free_.x() == 0.0 ? 0 : linear_free_.y() == 0.0 ? 1 : 2;
+    s << format("  plane hold: every particle stays in the plane through its centre normal to %c "
+                "(no force or velocity along %c, torque and spin about %c only)\n",
+                "xyz"[axis], "xyz"[axis], "xyz"[axis]);
+  }
   s << format("  time step: %.4g s, %s\n", time_step_.value, time_step_.justification.c_str());
   s << format("  neighbours: linked cells + half Verlet list, skin %.4g m (rebuild when a "
               "particle moves > skin/2), Morton re-sort every %zu rebuilds\n",

@@ -22,8 +22,10 @@ bool WedgeHopperSlab::periodic() const {
   return faces == SlabFaces::periodic ||
          (faces == SlabFaces::automatic && depth >= 4.0 * radius * (1.0 + skin_fraction));
 }
+bool WedgeHopperSlab::one_layer() const { return depth < 2.0 * radius * (1.0 + 1e-3); }
 SlabFaces WedgeHopperSlab::built_faces() const {
   if (periodic()) return SlabFaces::periodic;
+  if (faces == SlabFaces::planar) return SlabFaces::planar;
   return faces == SlabFaces::frictionless ? SlabFaces::frictionless : SlabFaces::frictional;
 }
 double WedgeHopperSlab::wall_top() const { return fill_top() + 0.1; }
@@ -45,6 +47,15 @@ void WedgeHopperSlab::check() const {
         "periodic faces need a slab at least two neighbour cutoffs deep (%.4g mm); "
         "this one is %.4g mm ([dem] slab_depth; or choose \"frictional\" or \"frictionless\")",
         2e3 * cutoff, 1e3 * depth);
+    bad("dem.slab_faces", what);
+  }
+  if (faces == SlabFaces::planar && !one_layer()) {
+    char what[200];
+    std::snprintf(what, sizeof what,
+                  "planar holds one layer in its mid-plane: the slab must be less than 2 R x 1.001 "
+                  "(%.4g mm) deep; this one is %.4g mm ([dem] slab_depth; or choose \"frictional\" "
+                  "or \"frictionless\")",
+                  2e3 * radius * (1.0 + 1e-3), 1e3 * depth);
     bad("dem.slab_faces", what);
   }
 }
@@ -95,7 +106,9 @@ void WedgeHopperSlab::add_walls(DemEngine& engine) const {
   engine.add_mesh_wall(wedge_mesh());
   engine.add_wall(Wall::plane("bin left", Vec3(-b, 0, 0), Vec3::UnitX()));
   engine.add_wall(Wall::plane("bin right", Vec3(b, 0, 0), -Vec3::UnitX()));
-  if (!periodic()) {
+  if (built_faces() == SlabFaces::planar) {
+    engine.hold_in_plane(1);  // no faces: nothing moves across the slab
+  } else if (!periodic()) {
     const WallContactSet set = built_faces() == SlabFaces::frictionless
                                    ? WallContactSet::frictionless
                                    : WallContactSet::particle_wall;
@@ -129,7 +142,7 @@ RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t 
   if (!periodic()) {
     lower.y() = radius;
     upper.y() = depth - radius;
-    if (upper.y() - lower.y() < 1e-3 * radius) lower.y() = upper.y() = 0.5 * depth;
+    if (one_layer()) lower.y() = upper.y() = 0.5 * depth;
   }
   // A one-layer slab packs discs (area fraction ~0.82, volume share 2/3 of it); deeper ~0.6.
   const double phi = periodic() ? 0.6 : 0.82 * (4.0 / 3.0 * radius) / depth;
@@ -140,17 +153,19 @@ RainFillSettings WedgeHopperSlab::rain(double density, int bands, std::uint64_t 
 std::string WedgeHopperSlab::describe_faces() const {
   const SlabFaces built = built_faces();
   std::string s = built == SlabFaces::periodic ? "periodic front/back"
+                  : built == SlabFaces::planar
+                      ? "none: one layer held in its mid-plane (no motion across the slab, spin "
+                        "about its normal only), as the seed's 3 mm slab of 3 mm grains"
                   : built == SlabFaces::frictionless
                       ? "frictionless front and back planes (P-W normal law and damping, no "
                         "sliding or rolling resistance)"
                       : "front and back planes with the particle-wall friction";
   if (faces == SlabFaces::automatic)
     s += " (slab_faces by default: periodic from two cutoffs deep)";
-  if (built != SlabFaces::periodic && depth < 2.0 * radius * (1.0 + 1e-3))
-    s += "; one layer whose centres in the mid-plane stay there, so the faces carry no load (as "
-         "the seed's periodic 3 mm slab)";
-  else if (built == SlabFaces::frictional)
-    s += "; errs towards arching and a lower rate";
+  if (built != SlabFaces::planar && built != SlabFaces::periodic && one_layer())
+    s += "; one layer that leaves its mid-plane under load (a compressed layer buckles) and "
+         "presses on the faces";
+  if (built == SlabFaces::frictional) s += "; errs towards arching and a lower rate";
   return s;
 }
 

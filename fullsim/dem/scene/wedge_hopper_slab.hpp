@@ -8,12 +8,13 @@
 // is an analytic plane over the outlet, removed at the opening time ("removing the lower wall
 // sections"); the outlet sink takes every particle that has fallen 5 R below the outlet.
 //
-// Slab depth D and faces (slab_faces.hpp): by default one layer of spheres when D < 2 x the
-// neighbour cutoff, with frictional front and back planes at y = 0 and y = D, and a deeper slab
-// periodic in y; for D = 2 R the centres are inserted in the mid-plane, and since every contact
-// normal then lies in the x-z plane the particles stay there and never touch the front and back
-// (they stand in for the seed's periodic/frictionless faces). The faces may be chosen instead:
-// frictional or frictionless planes at any depth, periodic from two neighbour cutoffs on.
+// Slab depth D and faces (slab_faces.hpp): by default frictional front and back planes at
+// y = 0 and y = D when D < 2 x the neighbour cutoff, and a slab periodic in y from there on.
+// For D = 2 R the centres are inserted in the mid-plane, but a compressed layer buckles out of
+// it on round-off, so every grain soon presses on a face and the faces' friction acts (measured:
+// tests/benchmarks/RECORD.md). The faces may be chosen instead: frictional or frictionless
+// planes at any depth, periodic from two neighbour cutoffs on, or planar for one layer (no
+// faces; DemEngine::hold_in_plane keeps every centre in the mid-plane).
 #include <functional>
 #include <string>
 
@@ -38,14 +39,16 @@ struct WedgeHopperSlab {
   double fill_top() const;     // height of the fill surface above the outlet (H - apex) [m]
   double half_width(double z) const;  // of the container at height z [m]
   bool periodic() const;  // a periodic slab (chosen, or automatic and D >= 2 x the cutoff)
-  // The faces as built: frictional, frictionless or periodic (automatic resolved).
+  bool one_layer() const;  // D < 2 R x 1.001: the centres in the mid-plane
+  // The faces as built: frictional, frictionless, periodic or planar (automatic resolved).
   SlabFaces built_faces() const;
   std::string describe_faces() const;  // what the faces are and what they carry, for plans
   double sink_height() const { return -5.0 * radius; }
   double wall_top() const;     // the bin walls reach this high (room for the rain) [m]
   SimulationBox box() const;
   // The walls (named "wedge", "bin left/right", "front", "back", "gate") and the sink; the
-  // front and back take the frictionless contact set for frictionless faces.
+  // front and back take the frictionless contact set for frictionless faces, and a planar
+  // layer has none (the engine holds it in the mid-plane).
   void add_walls(DemEngine& engine) const;
   // The inclined and bin walls in the slab's mid-plane, for pictures (the gate left out).
   SceneOutline outline() const;

@@ -214,5 +214,49 @@ TEST(DemBoundaries, BlowUpGuardFiresWithItsMessage) {
   }
 }
 
+// A row of three frictionless spheres squeezed between two walls, the middle one 1e-6 R off
+// the row's line: free, the contact forces push it out of the line (the buckling that lifts a
+// one-layer slab onto its faces once its contacts slide); held in the plane normal to y, it
+// stays exactly where it was, and so do the others (no velocity along y, no spin about x or z).
+TEST(DemBoundaries, PlaneHoldKeepsACompressedRowInItsPlane) {
+  DemSettings s = hertz_settings(0.5, 0.0, 0.0);
+  s.gravity = Vec3::Zero();
+  const double r = kRadius, squeeze = 0.02 * r, offset = 1e-6 * r;
+  auto run = [&](bool hold) {
+    ParticleStore p;
+    p.add(Vec3(0.01 - 2 * r + squeeze, 0.01, 0.01), r, kDensity);
+    p.add(Vec3(0.01, 0.01 + offset, 0.01), r, kDensity);
+    p.add(Vec3(0.01 + 2 * r - squeeze, 0.01, 0.01), r, kDensity);
+    DemEngine e(s, SimulationBox{Vec3::Zero(), Vec3(0.02, 0.02, 0.02), {false, false, false}}, p);
+    e.add_wall(Wall::plane("left", Vec3(0.01 - 3 * r + squeeze, 0, 0), Vec3::UnitX()));
+    e.add_wall(Wall::plane("right", Vec3(0.01 + 3 * r - squeeze, 0, 0), -Vec3::UnitX()));
+    if (hold) e.hold_in_plane(1);
+    std::ostringstream plan;
+    e.prepare(plan);
+    if (hold) {
+      EXPECT_NE(plan.str().find("plane hold"), std::string::npos) << plan.str();
+    }
+    e.advance_to(0.02);
+    return e;
+  };
+  const DemEngine free = run(false), held = run(true);
+  const auto middle = [](const DemEngine& e) {
+    const ParticleStore& q = e.particles();
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (q.id[i] == 1) return q.position[i].y();
+    return 0.0;
+  };
+  std::printf("squeezed row after 0.02 s: middle sphere %.3g m off the line free, %.3g m held\n",
+              middle(free) - 0.01, middle(held) - 0.01);
+  EXPECT_GT(std::abs(middle(free) - 0.01), 1e3 * offset);  // pushed out of the line
+  EXPECT_EQ(middle(held), 0.01 + offset);                   // held in its own plane, to the bit
+  const ParticleStore& q = held.particles();
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    EXPECT_EQ(q.velocity[i].y(), 0.0);
+    EXPECT_EQ(q.angular_velocity[i].x(), 0.0);
+    EXPECT_EQ(q.angular_velocity[i].z(), 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace feedflow

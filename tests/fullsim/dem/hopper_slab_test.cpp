@@ -103,10 +103,57 @@ TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("dem.slab_faces"), std::string::npos) << e.what();
   }
+  try {
+    faces(SlabFaces::planar);
+    FAIL() << "a planar 3.3 mm slab of 1.5 mm spheres (not one layer) was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dem.slab_faces"), std::string::npos) << e.what();
+  }
   h.depth = 12e-3;
   EXPECT_EQ(faces(SlabFaces::periodic), std::make_pair(Sets{}, true));
   EXPECT_EQ(faces(SlabFaces::automatic), std::make_pair(Sets{}, true));
   EXPECT_EQ(faces(SlabFaces::frictionless), std::make_pair(smooth, false));
+}
+
+// One layer (a 3 mm slab of 1.5 mm spheres, the seed's): "planar" builds no faces and the
+// engine holds the layer in its mid-plane; the default (frictional faces) leaves the layer free,
+// and the plan says it then presses on them.
+TEST(WedgeHopperSlab, PlanarLayerHasNoFacesAndIsHeld) {
+  WedgeHopperSlab h{30.0 * std::numbers::pi / 180.0, 0.06, 0.6, 0.68, 3e-3, 1.5e-3, 0.3};
+  auto build = [&](SlabFaces f) {
+    h.faces = f;
+    h.check();
+    DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
+    h.add_walls(e);
+    std::size_t faces = 0;
+    for (const Wall& w : e.walls()) faces += w.name() == "front" || w.name() == "back";
+    return std::make_pair(faces, e.holds_in_plane());
+  };
+  EXPECT_EQ(build(SlabFaces::planar), std::make_pair(std::size_t{0}, true));
+  EXPECT_EQ(h.built_faces(), SlabFaces::planar);
+  EXPECT_EQ(build(SlabFaces::automatic), std::make_pair(std::size_t{2}, false));
+  EXPECT_EQ(h.built_faces(), SlabFaces::frictional);
+  EXPECT_NE(h.describe_faces().find("buckles"), std::string::npos) << h.describe_faces();
+}
+
+// The held layer through a fill and 0.1 s of discharge: every centre stays in the mid-plane
+// to the bit, so nothing ever crossed the slab.
+TEST(WedgeHopperSlab, HeldLayerStaysInTheMidPlaneThroughFillAndDischarge) {
+  WedgeHopperSlab h = small_wedge();  // 6 mm slab of 3 mm spheres: one layer
+  h.faces = SlabFaces::planar;
+  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
+  h.add_walls(e);
+  std::ostringstream log;
+  RainFillSettings rain = h.rain(390.0, 5, 7);
+  rain.settle_time_cap = 0.1;
+  rain_fill(e, rain, log);
+  const ParticleStore& p = e.particles();
+  ASSERT_GT(p.size(), 50u);
+  for (std::size_t k = 0; k < p.size(); ++k) EXPECT_EQ(p.position[k].y(), 0.5 * h.depth);
+  e.set_wall_removal_time("gate", e.time());
+  e.advance_to(e.time() + 0.1);
+  for (std::size_t k = 0; k < p.size(); ++k) EXPECT_EQ(p.position[k].y(), 0.5 * h.depth);
+  ASSERT_GT(e.outlet_sink()->removed_count(), 20u);  // it flowed
 }
 
 }  // namespace

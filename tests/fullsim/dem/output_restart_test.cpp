@@ -114,6 +114,46 @@ TEST(DemOutputRestart, RestartedRunContinuesBitIdentically) {
   fs::remove_all(dir);
 }
 
+// A plane hold (a one-layer slab's) set on the engine goes through restore(): the restored
+// engine still holds, and its particles continue with the straight run's bits (the slab scenes
+// restore into an engine built with their walls and hold).
+TEST(DemOutputRestart, RestoreKeepsThePlaneHold) {
+  const fs::path dir = scratch("hold");
+  const DemSettings s = restart_settings();
+  const long N = 400;
+  std::ostringstream plan;
+  auto held = [&s]() {  // one layer of 16 spheres in the plane y = 8 mm, on the sliding floor
+    ParticleStore p;
+    add_lattice(p, Vec3(2e-3, 8e-3, 1.6e-3), 4, 1, 4, 2.95e-3, 0.05);
+    const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.02);
+    DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
+    e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
+    add_side_walls(e, lower, upper);
+    e.hold_in_plane(1);
+    return e;
+  };
+  DemEngine straight = held();
+  straight.prepare(plan);
+  straight.run_steps(N);
+  DemEngine first = held();
+  first.prepare(plan);
+  first.run_steps(N / 2);
+  first.write_checkpoint(dir / "half.h5");
+  DemEngine restored = held();
+  restored.restore(Hdf5File(dir / "half.h5", Hdf5File::Mode::read));
+  EXPECT_TRUE(restored.holds_in_plane());
+  restored.prepare(plan);
+  restored.run_steps(N - N / 2);
+  const ParticleStore& a = straight.particles();
+  const ParticleStore& b = restored.particles();
+  ASSERT_EQ(a.size(), b.size());
+  const std::size_t bytes = a.size() * sizeof(Vec3);
+  EXPECT_EQ(std::memcmp(a.position.data(), b.position.data(), bytes), 0);
+  EXPECT_EQ(std::memcmp(a.velocity.data(), b.velocity.data(), bytes), 0);
+  for (std::size_t i = 0; i < b.size(); ++i) EXPECT_EQ(b.position[i].y(), 8e-3);
+  fs::remove_all(dir);
+}
+
 // The blow-up guard's energy book (initial energy, floor, gravity work, the wall speed the floor
 // allows for) goes through a restart as it was: a run whose floor slides from the start,
 // checkpointed while one sphere thrown up at 0.5 m/s makes the bed ~10 mm taller than at the start
