@@ -4,6 +4,7 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "fullsim/dem/scene/wedge_hopper_slab.hpp"
 #include "models/core/errors.hpp"
@@ -19,17 +20,26 @@ WedgeHopperSlab small_wedge() {
   return WedgeHopperSlab{30.0 * std::numbers::pi / 180.0, 0.06, 0.12, 0.1, 6e-3, 3e-3, 0.3};
 }
 
+// The slab `h` with its walls, rain-filled in 5 bands (random seed `seed`, settling capped at
+// 0.1 s); the fill's report in `report` if given.
+DemEngine filled(const WedgeHopperSlab& h, std::uint64_t seed, FillReport* report = nullptr) {
+  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
+  h.add_walls(e);
+  std::ostringstream log;
+  RainFillSettings rain = h.rain(390.0, 5, seed);
+  rain.settle_time_cap = 0.1;
+  const FillReport f = rain_fill(e, rain, log);
+  if (report) *report = f;
+  return e;
+}
+
 // Mass bookkeeping: after filling, trimming and 0.25 s of discharge, every inserted sphere is
 // either in the domain, booked by the sink or trimmed, exactly once (ids), and the masses add
 // up to the inserted mass (same spheres: to the last bits but round-off of the sums).
 TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
   const WedgeHopperSlab h = small_wedge();
-  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
-  h.add_walls(e);
-  std::ostringstream log;
-  RainFillSettings rain = h.rain(390.0, 5, 7);
-  rain.settle_time_cap = 0.1;
-  const FillReport f = rain_fill(e, rain, log);
+  FillReport f;
+  DemEngine e = filled(h, 7, &f);
   e.set_wall_removal_time("gate", e.time());
   e.advance_to(e.time() + 0.25);
   const OutletSink& sink = *e.outlet_sink();
@@ -41,12 +51,7 @@ TEST(WedgeHopperSlab, InsertedEqualsInDomainPlusSinkPlusTrimmed) {
 // predicate), trimmed at the fill top, and the bands count up from the outlet plane.
 TEST(WedgeHopperSlab, FillStaysInsideTheWedgeAndIsBanded) {
   const WedgeHopperSlab h = small_wedge();
-  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
-  h.add_walls(e);
-  std::ostringstream log;
-  RainFillSettings rain = h.rain(390.0, 5, 3);
-  rain.settle_time_cap = 0.1;
-  rain_fill(e, rain, log);
+  const DemEngine e = filled(h, 3);
   const ParticleStore& p = e.particles();
   ASSERT_GT(p.size(), 50u);
   double top_layer = 0.0;
@@ -76,8 +81,10 @@ TEST(WedgeHopperSlab, PilotGeometry) {
 
 // The slab faces reach the walls: by default a 3.3 mm pilot slab has frictional front and back
 // planes (today's rule), "frictionless" gives the same planes with the frictionless contact set,
-// "periodic" a periodic y axis and no planes; periodic faces on a slab thinner than two cutoffs
-// are refused naming dem.slab_faces.
+// "periodic" a periodic y axis and no planes; periodic faces on a slab thinner than two cutoffs,
+// and planar ones on more than one layer, are refused naming dem.slab_faces. One layer (3 mm,
+// the seed's): "planar" builds no faces and the engine holds the layer in its mid-plane; the
+// default keeps frictional faces and the plan says the free layer presses on them.
 TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
   WedgeHopperSlab h{30.0 * std::numbers::pi / 180.0, 0.06, 0.6, 0.68, 3.3e-3, 1.5e-3, 0.3};
   auto faces = [&](SlabFaces f) {
@@ -88,14 +95,14 @@ TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
     std::vector<WallContactSet> sets;
     for (const Wall& w : e.walls())
       if (w.name() == "front" || w.name() == "back") sets.push_back(w.contact_set());
-    return std::make_pair(sets, e.box().periodic[1]);
+    return std::make_tuple(sets, e.box().periodic[1], e.holds_in_plane());
   };
   using Sets = std::vector<WallContactSet>;
   const Sets rough{WallContactSet::particle_wall, WallContactSet::particle_wall};
   const Sets smooth{WallContactSet::frictionless, WallContactSet::frictionless};
-  EXPECT_EQ(faces(SlabFaces::automatic), std::make_pair(rough, false));
-  EXPECT_EQ(faces(SlabFaces::frictional), std::make_pair(rough, false));
-  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_pair(smooth, false));
+  EXPECT_EQ(faces(SlabFaces::automatic), std::make_tuple(rough, false, false));
+  EXPECT_EQ(faces(SlabFaces::frictional), std::make_tuple(rough, false, false));
+  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_tuple(smooth, false, false));
   EXPECT_NE(h.describe().find("frictionless front and back planes"), std::string::npos);
   try {
     faces(SlabFaces::periodic);
@@ -109,31 +116,14 @@ TEST(WedgeHopperSlab, SlabFacesChooseTheFrontAndBackWalls) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("dem.slab_faces"), std::string::npos) << e.what();
   }
-  h.depth = 12e-3;
-  EXPECT_EQ(faces(SlabFaces::periodic), std::make_pair(Sets{}, true));
-  EXPECT_EQ(faces(SlabFaces::automatic), std::make_pair(Sets{}, true));
-  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_pair(smooth, false));
-}
-
-// One layer (a 3 mm slab of 1.5 mm spheres, the seed's): "planar" builds no faces and the
-// engine holds the layer in its mid-plane; the default (frictional faces) leaves the layer free,
-// and the plan says it then presses on them.
-TEST(WedgeHopperSlab, PlanarLayerHasNoFacesAndIsHeld) {
-  WedgeHopperSlab h{30.0 * std::numbers::pi / 180.0, 0.06, 0.6, 0.68, 3e-3, 1.5e-3, 0.3};
-  auto build = [&](SlabFaces f) {
-    h.faces = f;
-    h.check();
-    DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
-    h.add_walls(e);
-    std::size_t faces = 0;
-    for (const Wall& w : e.walls()) faces += w.name() == "front" || w.name() == "back";
-    return std::make_pair(faces, e.holds_in_plane());
-  };
-  EXPECT_EQ(build(SlabFaces::planar), std::make_pair(std::size_t{0}, true));
-  EXPECT_EQ(h.built_faces(), SlabFaces::planar);
-  EXPECT_EQ(build(SlabFaces::automatic), std::make_pair(std::size_t{2}, false));
-  EXPECT_EQ(h.built_faces(), SlabFaces::frictional);
+  h.depth = 3e-3;
+  EXPECT_EQ(faces(SlabFaces::planar), std::make_tuple(Sets{}, false, true));
+  EXPECT_EQ(faces(SlabFaces::automatic), std::make_tuple(rough, false, false));
   EXPECT_NE(h.describe_faces().find("buckles"), std::string::npos) << h.describe_faces();
+  h.depth = 12e-3;
+  EXPECT_EQ(faces(SlabFaces::periodic), std::make_tuple(Sets{}, true, false));
+  EXPECT_EQ(faces(SlabFaces::automatic), std::make_tuple(Sets{}, true, false));
+  EXPECT_EQ(faces(SlabFaces::frictionless), std::make_tuple(smooth, false, false));
 }
 
 // The held layer through a fill and 0.1 s of discharge: every centre stays in the mid-plane
@@ -141,12 +131,7 @@ TEST(WedgeHopperSlab, PlanarLayerHasNoFacesAndIsHeld) {
 TEST(WedgeHopperSlab, HeldLayerStaysInTheMidPlaneThroughFillAndDischarge) {
   WedgeHopperSlab h = small_wedge();  // 6 mm slab of 3 mm spheres: one layer
   h.faces = SlabFaces::planar;
-  DemEngine e(dem_test::pine_twin_settings(), h.box(), ParticleStore{});
-  h.add_walls(e);
-  std::ostringstream log;
-  RainFillSettings rain = h.rain(390.0, 5, 7);
-  rain.settle_time_cap = 0.1;
-  rain_fill(e, rain, log);
+  DemEngine e = filled(h, 7);
   const ParticleStore& p = e.particles();
   ASSERT_GT(p.size(), 50u);
   for (std::size_t k = 0; k < p.size(); ++k) EXPECT_EQ(p.position[k].y(), 0.5 * h.depth);

@@ -41,9 +41,10 @@ DemSettings restart_settings() {
   return s;
 }
 
-DemEngine make_restart_scene(const DemSettings& s) {
+DemEngine make_restart_scene(const DemSettings& s, const Vec3& origin = Vec3(2e-3, 2e-3, 1.6e-3),
+                             int rows_in_y = 4) {
   ParticleStore p;
-  add_lattice(p, Vec3(2e-3, 2e-3, 1.6e-3), 4, 4, 4, 2.95e-3, 0.05);
+  add_lattice(p, origin, 4, rows_in_y, 4, 2.95e-3, 0.05);
   const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.02);
   DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
   e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
@@ -123,12 +124,7 @@ TEST(DemOutputRestart, RestoreKeepsThePlaneHold) {
   const long N = 400;
   std::ostringstream plan;
   auto held = [&s]() {  // one layer of 16 spheres in the plane y = 8 mm, on the sliding floor
-    ParticleStore p;
-    add_lattice(p, Vec3(2e-3, 8e-3, 1.6e-3), 4, 1, 4, 2.95e-3, 0.05);
-    const Vec3 lower(0, 0, 0), upper(0.016, 0.016, 0.02);
-    DemEngine e(s, SimulationBox{lower, upper, {false, false, false}}, p);
-    e.add_wall(Wall::plane("floor", lower, Vec3::UnitZ()).moving(Vec3(0.02, 0, 0), Vec3::Zero()));
-    add_side_walls(e, lower, upper);
+    DemEngine e = make_restart_scene(s, Vec3(2e-3, 8e-3, 1.6e-3), 1);
     e.hold_in_plane(1);
     return e;
   };
