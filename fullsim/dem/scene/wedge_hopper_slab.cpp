@@ -155,7 +155,7 @@ std::string WedgeHopperSlab::describe_faces() const {
   std::string s = built == SlabFaces::periodic ? "periodic front/back"
                   : built == SlabFaces::planar
                       ? "none: one layer held in its mid-plane (no motion across the slab, spin "
-                        "about its normal only), as the seed's 3 mm slab of 3 mm grains"
+                        "about its normal only), a disc packing without face friction"
                   : built == SlabFaces::frictionless
                       ? "frictionless front and back planes (P-W normal law and damping, no "
                         "sliding or rolling resistance)"
@@ -163,7 +163,7 @@ std::string WedgeHopperSlab::describe_faces() const {
   if (faces == SlabFaces::automatic)
     s += " (slab_faces by default: periodic from two cutoffs deep)";
   if (built != SlabFaces::planar && built != SlabFaces::periodic && one_layer())
-    s += "; one layer that leaves its mid-plane under load (a compressed layer buckles) and "
+    s += "; one layer that leaves its mid-plane once it flows (a compressed layer buckles) and "
          "presses on the faces";
   if (built == SlabFaces::frictional) s += "; errs towards arching and a lower rate";
   return s;
