@@ -69,8 +69,8 @@ TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
 }
 
 // W = 20 mm (3.3 sphere diameters in the twin): an arch forms, the run ends on it, nothing
-// keeps flowing and the verdict fails. The arch stands on the default frictional faces, which
-// the flowing layer presses on (with "planar" faces the same twin empties: RECORD.md).
+// keeps flowing and the verdict fails. The arch needs the layer's freedom across the slab:
+// held "planar", the same twin empties (RECORD.md).
 TEST(DemHopperSimulation, TwinArchesAtTwentyMillimetres) {
   const fs::path out = scratch("arch");
   const SimulationOutcome o = simulate(kTwin, {{"hopper.outlet_width", "20 mm"}}, out);

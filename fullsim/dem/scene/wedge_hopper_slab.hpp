@@ -12,9 +12,10 @@
 // y = 0 and y = D when D < 2 x the neighbour cutoff, and a slab periodic in y from there on.
 // For D = 2 R the centres are inserted in the mid-plane and the fill stays there, but once the
 // layer flows it buckles out of it on round-off, so every grain soon presses on a face and the
-// faces' friction acts (measured: tests/benchmarks/RECORD.md). The faces may be chosen instead: frictional or frictionless
-// planes at any depth, periodic from two neighbour cutoffs on, or planar for one layer (no
-// faces; DemEngine::hold_in_plane keeps every centre in the mid-plane).
+// faces' friction acts (measured: tests/benchmarks/RECORD.md). The faces may be chosen
+// instead: frictional or frictionless planes at any depth, periodic from two neighbour cutoffs
+// on, or planar for one layer (no faces; DemEngine::hold_in_plane keeps every centre in the
+// mid-plane).
 #include <functional>
 #include <string>
 
