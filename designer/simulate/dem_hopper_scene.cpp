@@ -61,6 +61,22 @@ std::string DemHopperScene::model_text() const {
   return "DEM (rung L3), " + std::get<ConicalHopper>(geometry).simulated_part();
 }
 
+namespace {
+
+// A geometry's own check names the key; the case file is added here.
+template <class Geometry>
+void check_geometry(const Case& c, const Geometry& g) {
+  try {
+    g.check();
+  } catch (const InputError& e) {
+    if (!e.where().empty()) throw;
+    const std::string text = e.what(), prefix = e.key().empty() ? "" : e.key() + ": ";
+    throw InputError(c.file, e.key(), text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text);
+  }
+}
+
+}  // namespace
+
 DemHopperScene hopper_scene_from_case(const Case& c) {
   const Hopper& h = std::get<Hopper>(c.equipment);
   if (!c.material.dem)
@@ -78,7 +94,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
     WedgeHopperSlab slab{h.semi_angle, h.outlet_width, h.bin_width, h.fill_height,
                          c.dem.slab_depth.value_or(2.0 * r), r, s.settings.skin_fraction};
     slab.faces = slab_faces_of(c);
-    slab.check();
+    check_geometry(c, slab);
     if (!h.slot_length) refused("hopper.slot_length", "the wedge needs its slot length");
     s.slot_length = *h.slot_length;
     s.geometry = slab;
@@ -87,7 +103,7 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
     if (!c.dem.slab_faces.empty()) refused("dem.slab_faces", "a conical hopper runs in 3D; its sector's sides are frictionless symmetry planes");
     const ConicalHopper cone{h.semi_angle, h.outlet_width, h.bin_width, h.fill_height,
                              c.dem.sector_angle.value_or(2.0 * std::numbers::pi), r};
-    cone.check();
+    check_geometry(c, cone);
     s.geometry = cone;
   }
   s.seed = static_cast<std::uint64_t>(c.dem.random_seed.value_or(1.0));

@@ -43,8 +43,9 @@ TEST_F(SlabFacesCli, FrictionlessFacesReachTheHopperRun) {
   EXPECT_TRUE(stated) << json.at("assumptions").dump(1);
 }
 
-// A value that is not one of the three, periodic faces on a one-layer hopper slab, and flat
-// faces on the drum's periodic slab are refused with exit 2 naming dem.slab_faces.
+// A value that is not one of the four, periodic faces on a one-layer hopper slab, planar ones
+// on a slab deeper than one layer, and flat faces on the drum's periodic slab are refused with
+// exit 2 naming dem.slab_faces and where it came from, writing nothing.
 TEST_F(SlabFacesCli, BadFacesAreRefusedNamingTheKey) {
   fs::copy_file(fs::path(FEEDFLOW_SOURCE_DIR) / "tests/data/dem_hopper_twin.toml",
                 dir_ / "twin.toml");
@@ -52,14 +53,20 @@ TEST_F(SlabFacesCli, BadFacesAreRefusedNamingTheKey) {
        {"simulate twin.toml --solver dem --time 0.05s --set dem.slab_faces=sticky --out a",
         "simulate twin.toml --solver dem --time 0.05s --set dem.slab_depth=6.6mm --set "
         "dem.slab_faces=periodic --out b",
+        "simulate twin.toml --solver dem --time 0.05s --set dem.slab_depth=6.6mm --set "
+        "dem.slab_faces=planar --out d",
         "simulate cases/rotating_drum_20rpm.toml --solver dem --time 0.05s --set "
         "dem.slab_depth=18mm "
         "--set dem.slab_faces=frictionless --out c"}) {
     const auto r = run_feedflow(cmd, dir_);
     EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.err;
     EXPECT_NE(r.err.find("dem.slab_faces"), std::string::npos) << cmd << "\n" << r.err;
+    // where the value came from: the case file or the --set override
+    EXPECT_TRUE(r.err.find(".toml: dem.slab_faces") != std::string::npos ||
+                r.err.find("--set: dem.slab_faces") != std::string::npos)
+        << cmd << "\n" << r.err;
   }
-  EXPECT_FALSE(fs::exists(dir_ / "a"));
+  for (const char* out : {"a", "b", "c", "d"}) EXPECT_FALSE(fs::exists(dir_ / out)) << out;
 }
 
 }  // namespace
