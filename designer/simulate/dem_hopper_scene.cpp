@@ -63,6 +63,17 @@ std::string DemHopperScene::model_text() const {
 
 namespace {
 
+constexpr const char* kSceneName = "DEM hopper";  // a wedge slab or a cone
+
+bool is_hopper_checkpoint(const Hdf5File& f) {
+  if (f.exists("/scene/initial_ids")) return true;  // written before the scene was named
+  try {
+    return f.string_attribute("/scene", "scene") == kSceneName;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 // A geometry's own check names the key; the case file is added here.
 template <class Geometry>
 void check_geometry(const Case& c, const Geometry& g) {
@@ -70,8 +81,7 @@ void check_geometry(const Case& c, const Geometry& g) {
     g.check();
   } catch (const InputError& e) {
     if (!e.where().empty()) throw;
-    const std::string text = e.what(), prefix = e.key().empty() ? "" : e.key() + ": ";
-    throw InputError(c.file, e.key(), text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text);
+    throw InputError(c.file, e.key(), e.message());
   }
 }
 
@@ -110,21 +120,6 @@ DemHopperScene hopper_scene_from_case(const Case& c) {
   if (c.dem.end_time) s.default_duration = *c.dem.end_time;
   return s;
 }
-
-namespace {
-
-constexpr const char* kSceneName = "DEM hopper";  // a wedge slab or a cone
-
-bool is_hopper_checkpoint(const Hdf5File& f) {
-  if (f.exists("/scene/initial_ids")) return true;  // written before the scene was named
-  try {
-    return f.string_attribute("/scene", "scene") == kSceneName;
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
-}  // namespace
 
 void save_hopper_scene(const DemHopperScene& s, Hdf5File& f) {
   f.set_attribute("/scene", "scene", std::string(kSceneName));

@@ -218,10 +218,7 @@ SweepAxis parse_sweep_axis(const std::string& text, const std::string& flag) {
     try {
       return parse_sweep_axis(text);
     } catch (const InputError& e) {
-      const std::string prefix = e.where() + ": " + e.key() + ": ";
-      const std::string what = e.what();
-      throw InputError(flag, e.key(),
-                       what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
+      throw InputError(flag, e.key(), e.message());
     }
   }
   const auto eq = text.find('=');

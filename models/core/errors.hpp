@@ -13,9 +13,12 @@ class InputError : public std::runtime_error {
   InputError(std::string where, std::string key, const std::string& message)
       : std::runtime_error(compose(where, key, message)),
         where_(std::move(where)),
-        key_(std::move(key)) {}
+        key_(std::move(key)),
+        message_(message) {}
   const std::string& where() const { return where_; }
   const std::string& key() const { return key_; }
+  // What was wrong, without the file and key (to re-throw with a place added).
+  const std::string& message() const { return message_; }
 
  private:
   static std::string compose(const std::string& where, const std::string& key,
@@ -43,6 +46,7 @@ class InputError : public std::runtime_error {
   }
   std::string where_;
   std::string key_;
+  std::string message_;
 };
 
 // A capability that this build does not have yet. Exit code 3.
