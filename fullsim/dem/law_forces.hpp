@@ -194,7 +194,8 @@ class LawForces final : public ForceKernel {
           }
       if (walls) {
         const auto start = std::chrono::steady_clock::now();
-        own_[tid].wall_worst = walls_.rows(c, std::min(begin, c.owned), std::min(end, c.owned));
+        own_[tid].wall_worst = walls_.rows(c, std::min(begin, c.owned), std::min(end, c.owned),
+                                           own_[tid].wall_scratch);
         if (tid == 0)
           wall_seconds =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -244,6 +245,7 @@ class LawForces final : public ForceKernel {
   // written at every push; two threads' queues on one line would bounce it between cores).
   struct alignas(64) ThreadShare {
     Batch batch;
+    typename WallContactForces<Law>::Scratch wall_scratch;
     std::vector<Reaction> queue;
     DeepestOverlap worst;
     DeepestOverlap wall_worst;

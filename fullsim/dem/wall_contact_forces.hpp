@@ -3,14 +3,15 @@
 // wall may instead take that set without sliding and rolling friction, a frictionless face):
 // analytic walls (one history per particle and wall) and triangle meshes (MeshWall::kMaxContacts
 // slots per particle and mesh, each a normal and a history, matched by normal from step to step).
-// Each contact touches only its own particle, so threads may run their own rows at once.
+// Each contact touches only its own particle, so threads may run their own rows at once. The
+// law runs over batches of closed contacts (wall_contact_batch.hpp), as in the pair loop.
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 
 #include "fullsim/dem/force_kernel.hpp"
+#include "fullsim/dem/wall_contact_batch.hpp"
 #include "models/contact/contact_kinematics.hpp"
 
 namespace feedflow {
@@ -38,13 +39,25 @@ class WallContactForces {
  public:
   using History = typename Law::History;
   static constexpr std::size_t kHistory = Law::kHistorySize;
+  using Batch = WallContactBatch<kHistory>;
+
+  // One thread's closed contacts waiting for the law: a batch per parameter set (the P-W set,
+  // and the frictionless faces' set) and the order in which the contacts were found.
+  struct Scratch {
+    std::array<Batch, 2> batch;  // [0]: the P-W set, [1]: without friction
+    std::array<std::uint32_t, 2 * Batch::kSize> particle;
+    std::array<std::uint8_t, 2 * Batch::kSize> set, lane;
+    std::size_t count = 0;
+  };
 
   explicit WallContactForces(const DemContactParameters& particle_wall)
       : law_(particle_wall), frictionless_law_(without_friction(particle_wall)) {}
 
   // The particle-wall contacts of the particles in slots [begin, end), each touching only its
-  // own particle (so a thread may run its own rows while another runs its own).
-  DeepestOverlap rows(ForceContext& c, std::size_t begin, std::size_t end) {
+  // own particle (so a thread may run its own rows, with its own `scratch`, while another runs
+  // its own). The closed contacts are gathered into batches, the law runs over each batch as one
+  // vector loop, and each particle takes its contacts' forces in the order they were found.
+  DeepestOverlap rows(ForceContext& c, std::size_t begin, std::size_t end, Scratch& scratch) {
     ParticleStore& p = c.particles;
     const std::size_t walls = c.walls.size();
     const std::size_t meshes = c.meshes.size();
@@ -54,7 +67,23 @@ class WallContactForces {
     constexpr int kSlots = MeshWall::kMaxContacts;
     const std::size_t stride = walls * kHistory + meshes * kSlots * kSlot;
     double* history = p.wall_history.data();
+    const int lane_bits = std::min(c.max_lane_bits, lane_bits_available());
     DeepestOverlap worst;
+    scratch.count = 0;
+    for (Batch& b : scratch.batch) b.count = 0;
+    // Queues a closed contact of particle i with parameter set `set` (0 or 1).
+    auto queue = [&](std::size_t i, int set, double gap, const Vec3& normal,
+                     const Vec3& surface_velocity, const Vec3& wall_spin, double* h) {
+      Batch& b = scratch.batch[static_cast<std::size_t>(set)];
+      if (b.count == Batch::kSize) run(scratch, p, c.dt, lane_bits, worst);
+      const std::size_t k = b.count++;
+      b.set_contact(k, gap, normal, p.radius[i], p.velocity[i] - surface_velocity,
+                    p.angular_velocity[i], wall_spin, p.mass[i], p.inertia[i], h);
+      const std::size_t o = scratch.count++;
+      scratch.particle[o] = static_cast<std::uint32_t>(i);
+      scratch.set[o] = static_cast<std::uint8_t>(set);
+      scratch.lane[o] = static_cast<std::uint8_t>(k);
+    };
     for (std::size_t i = begin; i < end; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
@@ -69,12 +98,9 @@ class WallContactForces {
           clear_history<Law>(h);
           continue;
         }
-        const Vec3 surface_velocity = wall.surface_velocity(xi - touch.gap * touch.normal);
-        const Law& law =
-            wall.contact_set() == WallContactSet::frictionless ? frictionless_law_ : law_;
-        const double ratio = apply_wall_contact(law, p, i, touch.gap, touch.normal,
-                                                surface_velocity, wall.angular_velocity(), c.dt, h);
-        if (ratio > worst.ratio) worst = {ratio, i, true};
+        queue(i, wall.contact_set() == WallContactSet::frictionless ? 1 : 0, touch.gap,
+              touch.normal, wall.surface_velocity(xi - touch.gap * touch.normal),
+              wall.angular_velocity(), h);
       }
       for (std::size_t m = 0; m < meshes; ++m) {
         if (!in_reach(reach, walls + m)) continue;  // no contact, slots already free
@@ -114,13 +140,12 @@ class WallContactForces {
           slot[0] = touch[q].normal.x();
           slot[1] = touch[q].normal.y();
           slot[2] = touch[q].normal.z();
-          const double ratio = apply_wall_contact(law_, p, i, touch[q].gap, touch[q].normal,
-                                                  mesh.surface_velocity(touch[q].point),
-                                                  mesh.angular_velocity(), c.dt, slot + 3);
-          if (ratio > worst.ratio) worst = {ratio, i, true};
+          queue(i, 0, touch[q].gap, touch[q].normal, mesh.surface_velocity(touch[q].point),
+                mesh.angular_velocity(), slot + 3);
         }
       }
     }
+    run(scratch, p, c.dt, lane_bits, worst);
     return worst;
   }
 
@@ -137,33 +162,22 @@ class WallContactForces {
     return set;
   }
 
-  // One particle-wall contact with `law` (its parameter set): adds its force and torque to
-  // particle i and returns the overlap over the radius.
-  double apply_wall_contact(const Law& law, ParticleStore& p, std::size_t i, double gap,
-                            const Vec3& normal, const Vec3& surface_velocity,
-                            const Vec3& wall_angular_velocity, double dt, double* h) {
-    const double ri = p.radius[i];
-    const double overlap = ri - gap;
-    ContactInput in;
-    in.overlap = overlap;
-    in.normal = normal;
-    const double ci = ri - overlap;
-    const Vec3 vr = p.velocity[i] - surface_velocity;
-    in.normal_velocity = dot(vr, in.normal);
-    in.tangential_velocity =
-        vr - in.normal_velocity * in.normal + in.normal.cross(ci * p.angular_velocity[i]);
-    in.relative_angular_velocity = p.angular_velocity[i] - wall_angular_velocity;
-    in.effective_radius = ri;
-    in.effective_mass = p.mass[i];
-    in.effective_inertia = p.inertia[i];
-    in.dt = dt;
-    History hist;
-    if constexpr (kHistory > 0) std::memcpy(hist.data(), h, sizeof(History));
-    const ContactOutput out = law.evaluate(in, hist);
-    if constexpr (kHistory > 0) std::memcpy(h, hist.data(), sizeof(History));
-    p.force[i] += out.normal_force * in.normal + out.tangential_force;
-    p.torque[i] += out.rolling_torque - ci * in.normal.cross(out.tangential_force);
-    return overlap / ri;
+  // Runs the law over the queued contacts and adds their forces and torques to their particles
+  // in the order the contacts were found; watches the deepest.
+  void run(Scratch& s, ParticleStore& p, double dt, int lane_bits, DeepestOverlap& worst) const {
+    if (s.batch[0].count > 0) s.batch[0].evaluate_with(lane_bits, law_, dt);
+    if (s.batch[1].count > 0) s.batch[1].evaluate_with(lane_bits, frictionless_law_, dt);
+    for (std::size_t o = 0; o < s.count; ++o) {
+      const Batch& b = s.batch[s.set[o]];
+      const std::size_t k = s.lane[o], i = s.particle[o];
+      b.store_history(k);
+      p.force[i] += Vec3(b.fx[k], b.fy[k], b.fz[k]);
+      p.torque[i] += Vec3(b.tx[k], b.ty[k], b.tz[k]);
+      const double ratio = b.overlap_ratio(k);
+      if (ratio > worst.ratio) worst = {ratio, i, true};
+    }
+    s.count = 0;
+    for (Batch& b : s.batch) b.count = 0;
   }
   // Frees a mesh contact slot (normal and history).
   static void clear_slot(double* s) {
