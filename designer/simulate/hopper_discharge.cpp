@@ -10,6 +10,7 @@ namespace {
 
 constexpr double kConvergedHalfWidth = 0.05;  // the rate's interval within +-5 % ends the run
 constexpr std::size_t kConvergedBatches = 10;
+constexpr double kMinPatternWindow = 0.1;  // [s] the least time the flow line is averaged over
 
 SteadyRateSettings rate_settings() {
   SteadyRateSettings r;
@@ -86,14 +87,33 @@ SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge
   results.emplace_back("arching", Estimate{to_string(state), "", std::nullopt, std::nullopt, w.model + "; " + d.describe(),
                                            w.rung, ""});
   // The flow pattern from the speeds across the converging section at mid-height, over the
-  // steady window (the whole run without one).
-  const WallSpeedRatio ratio = rate.found ? flow_line.ratio(rate.window_start, rate.window_end)
-                                          : flow_line.ratio(w.pattern_from, std::numeric_limits<double>::infinity());
+  // steady window (the whole run without one); when the falling surface (or a crater) reached
+  // the line within the window, over the window's part before it.
+  const double from = rate.found ? rate.window_start : w.pattern_from;
+  const double to = rate.found ? rate.window_end : std::numeric_limits<double>::infinity();
+  WallSpeedRatio ratio = flow_line.ratio(from, to);
+  std::string window = rate.found ? "the steady window" : "the run";
+  bool cut = false;  // the window ends where the line emptied
+  if (!ratio.measured) {
+    const double until = flow_line.covered_until(from, to);
+    if (until - from >= kMinPatternWindow) {
+      ratio = flow_line.ratio(from, until);
+      window = format("t = %.3g-%.3g s, %s until the line emptied", from, until, window.c_str());
+      cut = true;
+    }
+  }
+  if (!arched && !ratio.measured)
+    record.verdict.reasons.push_back(format(
+        "flow pattern not measured: the line across the converging section at mid-height did "
+        "not hold material with a moving centre for %.3g s of %s",
+        kMinPatternWindow, rate.found ? "the steady window" : "the run"));
   if (!arched && ratio.measured) {
-    results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt, w.pattern_source, w.rung, ""});
+    results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt,
+                                                  w.pattern_source + (cut ? " (here " + window + ")" : ""),
+                                                  w.rung, ""});
     results.emplace_back("wall_to_centre_speed_ratio",
                          Estimate{ratio.ratio, "", std::nullopt, std::nullopt,
-                                  w.speeds + " at mid-height of the converging section, averaged over the steady window",
+                                  w.speeds + " at mid-height of the converging section, averaged over " + window,
                                   w.rung, ""});
     results.emplace_back(
         "stagnant_zone_width",

@@ -1,5 +1,6 @@
 #include "fullsim/common/flow_pattern_measurement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -48,6 +49,22 @@ WallSpeedRatio SpeedProfileSeries::ratio(double from, double to) const {
       mean.speed.push_back(p.first / static_cast<double>(p.second));
     }
   return wall_to_centre_speed_ratio(mean);
+}
+
+double SpeedProfileSeries::covered_until(double from, double to) const {
+  auto points = [this](std::size_t k) {
+    return (k + 1 < first_.size() ? first_[k + 1] : offset_.size()) - first_[k];
+  };
+  std::size_t fullest = 0;
+  for (std::size_t k = 0; k < time_.size(); ++k)
+    if (time_[k] >= from && time_[k] <= to) fullest = std::max(fullest, points(k));
+  double until = from;
+  for (std::size_t k = 0; k < time_.size(); ++k) {
+    if (time_[k] < from || time_[k] > to) continue;
+    if (2 * points(k) < fullest) return until;
+    until = time_[k];
+  }
+  return to;
 }
 
 void SpeedProfileSeries::save(Hdf5File& f, const std::string& group) const {

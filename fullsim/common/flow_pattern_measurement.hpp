@@ -44,6 +44,10 @@ class SpeedProfileSeries {
  public:
   void add(double time, const SpeedProfile& line);
   WallSpeedRatio ratio(double from, double to) const;
+  // The end of the part of [from, to] in which the line stayed under material: the time of the
+  // last sample before the first one holding fewer than half the points of the window's fullest
+  // sample (the falling surface, or a crater at the centre, has reached the line); `to` if none.
+  double covered_until(double from, double to) const;
   std::size_t size() const { return time_.size(); }
   // Into and from `group` of a checkpoint (a restarted run averages over the whole run).
   void save(Hdf5File& file, const std::string& group) const;

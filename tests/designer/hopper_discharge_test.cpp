@@ -88,5 +88,40 @@ TEST(HopperDischarge, EarliestConvergenceHoldsTheStopBack) {
   }
 }
 
+// The flow pattern of a run whose flow line empties within the steady window (a short fill: the
+// surface sinks through the line at 1.2 s of a 3 s window) is read over the window's part
+// before that, and said so; a line never covered for 0.1 s gives no pattern and a note, not a
+// silent gap.
+TEST(HopperDischarge, FlowPatternOverTheWindowsPartBeforeTheLineEmptied) {
+  const HopperDischarge d = rule(0.0);
+  const HopperDischarge::Rows rows = discharge(0.0, 0.0, 1.5, 3.0, 0.0);
+  DischargeWording w;
+  w.speeds = "particle speeds";
+  SpeedProfile mass_flow{{0.0, 0.01, 0.02, 0.03}, {1.0, 0.9, 0.8, 0.6}};
+  SpeedProfileSeries emptied, never;
+  for (int k = 0; k <= 300; ++k) {
+    const double t = 0.01 * k;
+    emptied.add(t, t <= 1.2 ? mass_flow : SpeedProfile{});
+    never.add(t, SpeedProfile{});
+  }
+  DesignRecord record;
+  ASSERT_TRUE(add_discharge_results(d, rows, emptied, w, record).found);
+  auto result = [&record](const std::string& name) -> const Estimate* {
+    for (const auto& [key, e] : record.results)
+      if (key == name) return &e;
+    return nullptr;
+  };
+  ASSERT_NE(result("flow_pattern"), nullptr);
+  EXPECT_EQ(std::get<std::string>(result("flow_pattern")->value), "mass");
+  EXPECT_NEAR(std::get<double>(result("wall_to_centre_speed_ratio")->value), 0.6, 1e-12);
+  EXPECT_NE(result("wall_to_centre_speed_ratio")->model.find("-1.2 s, the steady window until the line emptied"),
+            std::string::npos) << result("wall_to_centre_speed_ratio")->model;
+  DesignRecord bare;
+  add_discharge_results(d, rows, never, w, bare);
+  for (const auto& [key, e] : bare.results) EXPECT_NE(key, "flow_pattern");
+  ASSERT_FALSE(bare.verdict.reasons.empty());
+  EXPECT_NE(bare.verdict.reasons.back().find("flow pattern not measured"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace feedflow

@@ -67,5 +67,23 @@ TEST(FlowPatternMeasurement, SeriesAveragesOverTheWindow) {
             s.ratio(0.0, std::numeric_limits<double>::infinity()).ratio);
 }
 
+// A line that empties within the window (the surface sinking through it: 6 points, then 2,
+// then none) measures nothing over the whole window, but is covered until the last sample with
+// at least half its fullest count, and measures over that part.
+TEST(FlowPatternMeasurement, CoveredUntilTheSurfaceReachesTheLine) {
+  SpeedProfileSeries s;
+  for (int k = 0; k < 10; ++k) s.add(0.1 * k, line(0.5, 6));  // t = 0 .. 0.9 s, covered
+  s.add(1.0, line(0.5, 3));                                    // half of 6: still covered
+  s.add(1.1, line(0.5, 2));                                    // the surface is at the line
+  for (int k = 12; k < 30; ++k) s.add(0.1 * k, SpeedProfile{});  // empty
+  EXPECT_FALSE(s.ratio(0.0, 2.9).measured);
+  EXPECT_NEAR(s.covered_until(0.0, 2.9), 1.0, 1e-12);
+  EXPECT_NEAR(s.covered_until(0.0, 0.55), 0.55, 1e-12);  // covered to the window's end
+  EXPECT_NEAR(s.covered_until(1.15, 2.9), 2.9, 1e-12);   // nothing in it to lose
+  const WallSpeedRatio r = s.ratio(0.0, s.covered_until(0.0, 2.9));
+  ASSERT_TRUE(r.measured);
+  EXPECT_NEAR(r.ratio, 0.5, 1e-12);  // the wall point (k = 5 of 6) in the ten full samples
+}
+
 }  // namespace
 }  // namespace feedflow
