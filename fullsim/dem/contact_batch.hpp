@@ -10,12 +10,13 @@
 #include <cmath>
 #include <cstdint>
 
+#include "fullsim/dem/lane_widths.hpp"
 #include "models/contact/contact_kinematics.hpp"
 
 namespace feedflow {
 
 template <std::size_t kHistory>
-struct ContactBatch {
+struct ContactBatch : LaneWidths<ContactBatch<kHistory>> {
   static constexpr std::size_t kSize = 32;
   // What the first pass of the pair loop gives (set_pair).
   alignas(64) double dx[kSize], dy[kSize], dz[kSize], r2[kSize];
@@ -55,30 +56,10 @@ struct ContactBatch {
     wjz[k] = wj.z();
   }
 
-  // Runs `law` (a ContactLaw) on lanes [0, count), all of them touching pairs, with the vector
-  // width of any x86-64 (two lanes); `evaluate_avx2` (four lanes) and `evaluate_avx512` (eight)
-  // are the same loop, chosen at run time by what the processor has (`lane_bits_available`,
-  // force_kernel.hpp). All three give the same results bit for bit: each lane's arithmetic is
-  // the scalar one, and the translation unit is built without floating-point contraction
-  // (fullsim/CMakeLists.txt).
-  template <class Law>
-  [[gnu::noinline, gnu::flatten]] void evaluate(const Law& law, double dt) {
-    lanes(law, dt);
-  }
-#if defined(__x86_64__)
-  template <class Law>
-  [[gnu::noinline, gnu::flatten, gnu::target("avx2,fma")]] void evaluate_avx2(const Law& law,
-                                                                             double dt) {
-    lanes(law, dt);
-  }
-  template <class Law>
-  [[gnu::noinline, gnu::flatten, gnu::target("avx512f,avx512vl,avx512dq,avx2,fma")]] void
-  evaluate_avx512(const Law& law, double dt) {
-    lanes(law, dt);
-  }
-#endif
-
  private:
+  friend struct LaneWidths<ContactBatch>;
+  // The batch's one loop over lanes [0, count), all of them touching pairs, run by
+  // LaneWidths' evaluate variants (lane_widths.hpp).
   template <class Law>
   [[gnu::always_inline]] inline void lanes(const Law& law, double dt) {
     const std::size_t n = count;

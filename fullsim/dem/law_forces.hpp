@@ -113,13 +113,7 @@ class LawForces final : public ForceKernel {
       std::size_t row = begin;  // the row whose force is being summed
       Vec3 fi = Vec3::Zero(), ti = Vec3::Zero();
       auto run_batch = [&]() {
-#if defined(__x86_64__)
-        if (lane_bits >= 512) b.evaluate_avx512(particle_particle_, dt);
-        else if (lane_bits >= 256) b.evaluate_avx2(particle_particle_, dt);
-        else b.evaluate(particle_particle_, dt);
-#else
-        b.evaluate(particle_particle_, dt);
-#endif
+        b.evaluate_with(lane_bits, particle_particle_, dt);
         for (std::size_t k = 0; k < b.count; ++k) {
           if (b.i[k] != row) {
             force[row] += fi;

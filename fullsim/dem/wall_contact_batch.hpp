@@ -9,12 +9,13 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fullsim/dem/lane_widths.hpp"
 #include "models/contact/contact_kinematics.hpp"
 
 namespace feedflow {
 
 template <std::size_t kHistory>
-struct WallContactBatch {
+struct WallContactBatch : LaneWidths<WallContactBatch<kHistory>> {
   static constexpr std::size_t kSize = 32;
   alignas(64) double nx[kSize], ny[kSize], nz[kSize], gap[kSize], radius[kSize];
   alignas(64) double vrx[kSize], vry[kSize], vrz[kSize];        // v_i - wall surface velocity
@@ -60,38 +61,10 @@ struct WallContactBatch {
   // Lane k's overlap over the radius (the deepest contact is watched).
   double overlap_ratio(std::size_t k) const { return (radius[k] - gap[k]) / radius[k]; }
 
-  // Runs `law` on lanes [0, count) with two lanes (any x86-64); the AVX2 (four) and AVX-512
-  // (eight) variants are the same loop and give the same bits (see ContactBatch::evaluate).
-  template <class Law>
-  [[gnu::noinline, gnu::flatten]] void evaluate(const Law& law, double dt) {
-    lanes(law, dt);
-  }
-#if defined(__x86_64__)
-  template <class Law>
-  [[gnu::noinline, gnu::flatten, gnu::target("avx2,fma")]] void evaluate_avx2(const Law& law,
-                                                                             double dt) {
-    lanes(law, dt);
-  }
-  template <class Law>
-  [[gnu::noinline, gnu::flatten, gnu::target("avx512f,avx512vl,avx512dq,avx2,fma")]] void
-  evaluate_avx512(const Law& law, double dt) {
-    lanes(law, dt);
-  }
-#endif
-  // The variant for `lane_bits` (512, 256 or 128; lane_bits_available() caps it).
-  template <class Law>
-  void evaluate_with(int lane_bits, const Law& law, double dt) {
-#if defined(__x86_64__)
-    if (lane_bits >= 512) evaluate_avx512(law, dt);
-    else if (lane_bits >= 256) evaluate_avx2(law, dt);
-    else evaluate(law, dt);
-#else
-    (void)lane_bits;
-    evaluate(law, dt);
-#endif
-  }
-
  private:
+  friend struct LaneWidths<WallContactBatch>;
+  // The batch's one loop over lanes [0, count), run by LaneWidths' evaluate variants
+  // (lane_widths.hpp).
   template <class Law>
   [[gnu::always_inline]] inline void lanes(const Law& law, double dt) {
     const std::size_t n = count;
