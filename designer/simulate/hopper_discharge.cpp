@@ -92,13 +92,14 @@ SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge
   const double from = rate.found ? rate.window_start : w.pattern_from;
   const double to = rate.found ? rate.window_end : std::numeric_limits<double>::infinity();
   WallSpeedRatio ratio = flow_line.ratio(from, to);
-  std::string window = rate.found ? "the steady window" : "the run";
+  const std::string span = rate.found ? "the steady window" : "the run";
+  std::string window = span;
   bool cut = false;  // the window ends where the line emptied
   if (!ratio.measured) {
     const double until = flow_line.covered_until(from, to);
     if (until - from >= kMinPatternWindow) {
       ratio = flow_line.ratio(from, until);
-      window = format("t = %.3g-%.3g s, %s until the line emptied", from, until, window.c_str());
+      window = format("t = %.3g-%.3g s, %s until the line emptied", from, until, span.c_str());
       cut = true;
     }
   }
@@ -106,7 +107,7 @@ SteadyRate add_discharge_results(const HopperDischarge& d, const HopperDischarge
     record.verdict.reasons.push_back(format(
         "flow pattern not measured: the line across the converging section at mid-height did "
         "not hold material with a moving centre for %.3g s of %s",
-        kMinPatternWindow, rate.found ? "the steady window" : "the run"));
+        kMinPatternWindow, span.c_str()));
   if (!arched && ratio.measured) {
     results.emplace_back("flow_pattern", Estimate{ratio.label(), "", std::nullopt, std::nullopt,
                                                   w.pattern_source + (cut ? " (here " + window + ")" : ""),

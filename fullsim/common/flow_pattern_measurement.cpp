@@ -35,8 +35,7 @@ WallSpeedRatio SpeedProfileSeries::ratio(double from, double to) const {
   for (std::size_t k = 0; k < time_.size(); ++k) {
     if (time_[k] < from || time_[k] > to) continue;
     ++samples;
-    const std::size_t end = k + 1 < first_.size() ? first_[k + 1] : offset_.size();
-    for (std::size_t i = first_[k]; i < end; ++i) {
+    for (std::size_t i = first_[k]; i < end_of(k); ++i) {
       auto& p = points[std::lround(offset_[i] * 1e6)];
       p.first += speed_[i];
       ++p.second;
@@ -52,9 +51,7 @@ WallSpeedRatio SpeedProfileSeries::ratio(double from, double to) const {
 }
 
 double SpeedProfileSeries::covered_until(double from, double to) const {
-  auto points = [this](std::size_t k) {
-    return (k + 1 < first_.size() ? first_[k + 1] : offset_.size()) - first_[k];
-  };
+  auto points = [this](std::size_t k) { return end_of(k) - first_[k]; };
   std::size_t fullest = 0;
   for (std::size_t k = 0; k < time_.size(); ++k)
     if (time_[k] >= from && time_[k] <= to) fullest = std::max(fullest, points(k));

@@ -54,6 +54,8 @@ class SpeedProfileSeries {
   void restore(const Hdf5File& file, const std::string& group);
 
  private:
+  // Sample k's points lie in offset_/speed_ from first_[k] up to end_of(k).
+  std::size_t end_of(std::size_t k) const { return k + 1 < first_.size() ? first_[k + 1] : offset_.size(); }
   std::vector<double> time_;
   std::vector<std::size_t> first_;  // of each sample's points in offset_/speed_
   std::vector<double> offset_, speed_;

@@ -37,7 +37,6 @@ inline void clear_history(double* h) {
 template <class Law>
 class WallContactForces {
  public:
-  using History = typename Law::History;
   static constexpr std::size_t kHistory = Law::kHistorySize;
   using Batch = WallContactBatch<kHistory>;
 
