@@ -140,7 +140,7 @@ CelStepReport CelSolver::step() {
       nodes_.force[a] -= options_.settling_damping * nodes_.mass[a] * nodes_.velocity[a];
   report.dropped_momentum = advance_node_velocities(0.5 * (dt_previous_ + dt), void_node_mass_, nodes_);
   report.wall_forces = apply_wall_contact(grid_, walls, options_.contact, 0.5 * (dt_previous_ + dt),
-                                          void_node_mass_, nodes_);
+                                          void_node_mass_, cells_, nodes_);
   const CellUpdateReport cu =
       update_cell_states(grid_, active_, model_, options_.substepping, options_.mixed_cells, dt,
                          nodes_, cells_);

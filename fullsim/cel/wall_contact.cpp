@@ -31,21 +31,41 @@ NodeVector project(const NodeVector& v_rel, const NodeVector& n, const RigidWall
   return vt * (1.0 - wall.friction * -vn / speed);
 }
 
+// Whether node a is a corner of a cell inside a wall.
+bool corner_of_wall_cell(const CelGrid& grid, const CellFields& cells, std::size_t a) {
+  const int i = grid.node_i(a), j = grid.node_j(a);
+  for (int cj = j - 1; cj <= j; ++cj)
+    for (int ci = i - 1; ci <= i; ++ci)
+      if (ci >= 0 && cj >= 0 && ci < grid.nx && cj < grid.ny &&
+          cells.solid[grid.cell(ci, cj)] == kSolidInsideWall)
+        return true;
+  return false;
+}
+
 }  // namespace
 
 std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
                                            const std::vector<PlacedWall>& walls,
                                            const WallContactOptions& options, double dt,
-                                           double void_node_mass, NodeFields& nodes) {
+                                           double void_node_mass, const CellFields& cells,
+                                           NodeFields& nodes) {
   std::vector<NodeVector> reaction(walls.size(), NodeVector::Zero());
   if (walls.empty()) return reaction;
   const double d_c = options.contact_distance * grid.cell_size;
+  std::vector<double> distance(walls.size());
+  std::vector<NodeVector> normal(walls.size());
   for (std::size_t a = 0; a < grid.node_count(); ++a) {
     if (nodes.mass[a] <= void_node_mass) continue;
     const Eigen::Vector2d x = grid.node_position(a);
+    std::size_t nearest = 0;
     for (std::size_t k = 0; k < walls.size(); ++k) {
-      NodeVector n;
-      if (walls[k].signed_distance(x, &n) >= d_c) continue;
+      distance[k] = walls[k].signed_distance(x, &normal[k]);
+      if (distance[k] < distance[nearest]) nearest = k;
+    }
+    const bool held = corner_of_wall_cell(grid, cells, a);
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      if (distance[k] >= d_c && !(held && k == nearest)) continue;
+      const NodeVector& n = normal[k];
       const NodeVector vw = walls[k].velocity_at(x);
       const NodeVector before = nodes.velocity[a];
       nodes.velocity[a] = vw + project(before - vw, n, walls[k].wall());
@@ -59,10 +79,9 @@ void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells) {
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     if (cells.solid[c] == kSolidFixed) continue;
-    // An empty cell whose centre is a quarter cell or more inside the walls, or all of whose
-    // corners are.
+    // An empty cell whose centre is inside the walls, or all of whose corners are.
     bool inside = !walls.empty() && cells.mass[c] <= 0.0;
-    if (inside && distance_to_walls(walls, grid.cell_centre(c)) > -kWallCellCentreDepth * grid.cell_size)
+    if (inside && distance_to_walls(walls, grid.cell_centre(c)) > 0.0)
       for (std::size_t a : grid.cell_nodes(c)) {
         if (!inside) break;
         inside = distance_to_walls(walls, grid.node_position(a)) <= 0.0;

@@ -4,13 +4,16 @@
 // wall than the contact distance d_c loses the velocity component into the wall (relative to the
 // wall's own velocity); the tangential component sticks if |v_t| <= mu |v_n| and is otherwise
 // reduced by mu |v_n| (no slip: always sticks). The wall reaction m (v* - v) / dt is booked per
-// wall. Empty cells whose centre lies at least kWallCellCentreDepth cells inside the walls (or
-// all four of whose corners do) are solid (no material, no transport), so a sliver (a cell
-// mostly inside a wall) never takes material. A cut cell whose centre is less deep stays open:
-// the fill gives it no material (its centre is inside), but the flow may. Marking those solid too
-// left the wedge's outlet corner cell (its centre 0.18 cells deep) with a node of one open cell,
-// and the settling bed circulated there without end. No penalty parameter, no time-step
-// restriction.
+// wall. No penalty parameter, no time-step restriction.
+//
+// The grid sees an inclined wall as a staircase of solid cells: empty cells whose centre lies
+// inside the walls (or all four of whose corners do) take no material and no transport, so a
+// sliver (a cell mostly inside a wall) never fills. A corner of such a cell can lie up to 0.71
+// cells from the wall on the material side, beyond d_c, so every node of a solid cell is also
+// held by its nearest wall: no node moves into the staircase. Without that hold, the cut cell at
+// a wedge's outlet edge kept a free node and the settling bed circulated there without end; with
+// solid cells only from a quarter cell deep instead, cut cells less deep filled and slid along a
+// 40 deg cone's wall at twice the centre line's speed.
 #include <cstddef>
 #include <vector>
 
@@ -18,9 +21,6 @@
 #include "fullsim/cel/rigid_wall.hpp"
 
 namespace feedflow::cel {
-
-// How deep inside a wall an empty cell's centre lies, in cells, for the cell to be solid.
-inline constexpr double kWallCellCentreDepth = 0.25;
 
 struct WallContactOptions {
   double contact_distance = 0.5;  // d_c as a fraction of the cell size h
@@ -32,15 +32,17 @@ std::vector<PlacedWall> place_walls(const std::vector<RigidWall>& walls, double 
 // Smallest signed distance of x to the placed walls (+infinity without walls) [m].
 double distance_to_walls(const std::vector<PlacedWall>& walls, const Eigen::Vector2d& x);
 
-// Applies the contact to the nodes heavier than void_node_mass; returns the reaction force of
-// each placed wall on the material (same order as `walls`) [N/m].
+// Applies the contact to the nodes heavier than void_node_mass (within d_c of a wall, or a
+// corner of a cell marked kSolidInsideWall); returns the reaction force of each placed wall on
+// the material (same order as `walls`) [N/m].
 std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
                                            const std::vector<PlacedWall>& walls,
                                            const WallContactOptions& options, double dt,
-                                           double void_node_mass, NodeFields& nodes);
+                                           double void_node_mass, const CellFields& cells,
+                                           NodeFields& nodes);
 
-// Marks empty cells whose centre is kWallCellCentreDepth cells or more, or all four of whose
-// corners are, inside the walls kSolidInsideWall and releases wall cells no longer inside
+// Marks empty cells whose centre, or all four of whose corners, lie inside the walls
+// kSolidInsideWall and releases wall cells no longer inside
 // (moved or removed walls); kSolidFixed cells stay.
 void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells);

@@ -174,11 +174,11 @@ TEST(CelInclinedWall, MovingNoSlipBeltCarriesSlab) {
   EXPECT_NEAR(u / 0.2, 1.0, 0.02);
 }
 
-// The staircase of an inclined wall is the cell centres': an empty cell whose centre lies a
-// quarter cell or more inside the wall is solid even with a corner outside (a sliver takes no
-// material), one whose centre is less deep inside stays open (the wedge's outlet corner), and a
-// cell holding material is never solid.
-TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreAQuarterCellInside) {
+// The staircase of an inclined wall is the cell centres': an empty cell whose centre lies
+// inside the wall is solid even with corners outside (a sliver takes no material, nor does a
+// cut cell mostly inside), one whose centre is outside stays open, and a cell holding material
+// is never solid.
+TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreInside) {
   const CelGrid g = make_plane_strain_grid(4, 4, kCell);
   // Material above the line y = 0.5 x + 0.009 (normal (-0.5, 1) / |.|).
   const RigidWall wall = make_half_plane_wall({0.0, 0.009}, NodeVector(-0.5, 1.0).normalized());
@@ -189,22 +189,53 @@ TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreAQuarterCellInside) {
   mark_wall_cells(g, walls, cells);
   for (std::size_t c = 0; c < g.cell_count(); ++c) {
     const double d = distance_to_walls(walls, g.cell_centre(c));
-    const bool expected = d <= -kWallCellCentreDepth * kCell && cells.mass[c] <= 0.0;
+    const bool expected = d <= 0.0 && cells.mass[c] <= 0.0;
     EXPECT_EQ(cells.solid[c] != 0, expected) << "cell " << g.cell_i(c) << ", " << g.cell_j(c) << " d " << d;
   }
-  // Cell (2, 1): its centre (25, 15 mm) 5.8 mm inside (the line is at 21.5 mm there), its corner
-  // (20, 20) outside: solid.
-  EXPECT_LT(distance_to_walls(walls, g.cell_centre(g.cell(2, 1))), -0.5 * kCell);
-  EXPECT_GT(distance_to_walls(walls, {0.02, 0.02}), 0.0);
-  EXPECT_EQ(cells.solid[g.cell(2, 1)], kSolidInsideWall);
-  // Cell (1, 1): its centre (15, 15) 1.3 mm inside (line at 16.5), two corners inside: open.
+  // Cell (1, 1): its centre (15, 15 mm) only 1.3 mm inside (the line is at 16.5 mm there), two
+  // corners outside: solid.
   const double shallow = distance_to_walls(walls, g.cell_centre(g.cell(1, 1)));
   EXPECT_LT(shallow, 0.0);
-  EXPECT_GT(shallow, -kWallCellCentreDepth * kCell);
-  EXPECT_LT(distance_to_walls(walls, {0.01, 0.01}), 0.0);
-  EXPECT_LT(distance_to_walls(walls, {0.02, 0.01}), 0.0);
-  EXPECT_EQ(cells.solid[g.cell(1, 1)], 0);
+  EXPECT_GT(shallow, -0.25 * kCell);
+  EXPECT_GT(distance_to_walls(walls, {0.01, 0.02}), 0.0);
+  EXPECT_EQ(cells.solid[g.cell(1, 1)], kSolidInsideWall);
+  // Cell (2, 2): its centre (25, 25) 3.1 mm outside (line at 21.5), its corner (30, 20) inside: open.
+  EXPECT_GT(distance_to_walls(walls, g.cell_centre(g.cell(2, 2))), 0.0);
+  EXPECT_LT(distance_to_walls(walls, {0.03, 0.02}), 0.0);
+  EXPECT_EQ(cells.solid[g.cell(2, 2)], 0);
   EXPECT_EQ(cells.solid[g.cell(0, 0)], 0);
+}
+
+// No node moves into the staircase: a corner of a wall cell farther from the wall than the
+// contact distance (node (10, 20) mm, 5.4 mm from the line, a corner of the solid cell (1, 1))
+// loses its velocity into the wall like a node in contact, and reacts on the wall; a node as far
+// or farther that is no wall cell's corner keeps its velocity.
+TEST(CelRigidWall, CornersOfWallCellsAreHeldByTheirNearestWall) {
+  const CelGrid g = make_plane_strain_grid(4, 4, kCell);
+  const NodeVector n = NodeVector(-0.5, 1.0).normalized();
+  const RigidWall wall = make_half_plane_wall({0.0, 0.009}, n);  // frictionless
+  const std::vector<PlacedWall> walls = {PlacedWall(wall, 0.0)};
+  CellFields cells;
+  cells.resize(g.cell_count());
+  mark_wall_cells(g, walls, cells);
+  NodeFields nodes;
+  nodes.resize(g.node_count());
+  const NodeVector falling(0.3, -1.0);  // into the wall: v . n < 0
+  for (std::size_t a = 0; a < g.node_count(); ++a) {
+    nodes.mass[a] = 1.0;
+    nodes.velocity[a] = falling;
+  }
+  const WallContactOptions options;  // d_c = h / 2
+  const auto reaction = apply_wall_contact(g, walls, options, 1e-3, 0.0, cells, nodes);
+  const std::size_t held = g.node(1, 2), free = g.node(2, 4);
+  ASSERT_GT(distance_to_walls(walls, g.node_position(held)), options.contact_distance * kCell);
+  ASSERT_EQ(cells.solid[g.cell(1, 1)], kSolidInsideWall);
+  EXPECT_NEAR(nodes.velocity[held].dot(n), 0.0, 1e-15);
+  EXPECT_NEAR((nodes.velocity[held] - falling).norm(), -falling.dot(n), 1e-15);  // only v_n removed
+  // Node (20, 40): 21 mm from the line, no solid cell around it.
+  EXPECT_GT(distance_to_walls(walls, g.node_position(free)), distance_to_walls(walls, g.node_position(held)));
+  EXPECT_EQ(nodes.velocity[free], falling);
+  EXPECT_GT(reaction.at(0).dot(n), 0.0);  // the wall pushes the material out
 }
 
 }  // namespace
