@@ -9,11 +9,12 @@
 
 namespace feedflow {
 
-MeasuredOrder measured_hopper_rate_order() {
-  const MeasuredBench& table = measured_bench();
+MeasuredOrder measured_hopper_rate_order() { return measured_hopper_rate_order(measured_bench()); }
+
+MeasuredOrder measured_hopper_rate_order(const MeasuredBench& table) {
   const MeasuredQuestion* q = table.find("hopper_discharge_rate_60mm");
   if (!q || !q->order)
-    throw NotAvailable("the shipped bench table has no observed order for the hopper's discharge rate; give --order");
+    throw NotAvailable("the bench table has no observed order for the hopper's discharge rate; give --order");
   // An order above the scheme's is not carried to other geometries: the pilot hopper's three
   // levels may converge faster than a two-level estimate elsewhere can assume.
   if (*q->order > kDonorCellFormalOrder)

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "designer/bench/bench_plan.hpp"
+#include "designer/bench/measured_bench.hpp"
 
 namespace feedflow {
 
@@ -21,13 +22,14 @@ struct DesignPoint {
 // The order the hopper's CEL discharge rate converges with, as `feedflow bench` measured it
 // (the shipped table's pilot hopper question: 10, 5, 2.5 mm at W = 60 mm), and where it was
 // measured: what two levels extrapolate with unless told otherwise; at most the donor-cell
-// remap's formal order 1. Throws NotAvailable when the shipped table has no observed order for it.
+// remap's formal order 1. Throws NotAvailable when the table has no observed order for it.
 struct MeasuredOrder {
   double order;
   std::string source;
 };
 inline constexpr double kDonorCellFormalOrder = 1.0;  // first-order remap of the CEL rung
-MeasuredOrder measured_hopper_rate_order();
+MeasuredOrder measured_hopper_rate_order();                       // of the shipped table
+MeasuredOrder measured_hopper_rate_order(const MeasuredBench& table);
 
 struct CalibrationDesign {
   std::string case_file;                 // the hopper case whose outlet and semi-angle are varied

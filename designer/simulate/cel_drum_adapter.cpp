@@ -75,6 +75,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
     record.results.emplace_back("mass_balance_error",
                                 Estimate{s.total_mass() / run().initial_mass() - 1.0, "", std::nullopt, std::nullopt,
                                          "grid / initial - 1 (closed drum)", Rung::L2, ""});
+    add_overfilled_share(record);
   }
 
   std::vector<std::string> reduced_model_quantities() const override { return {"dynamic_angle_of_repose", "regime"}; }

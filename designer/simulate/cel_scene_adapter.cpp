@@ -96,4 +96,15 @@ void CelSceneAdapter::add_throughput(DesignRecord& record) const {
                                        "wall-clock throughput of the steps", Rung::L2, ""});
 }
 
+void CelSceneAdapter::add_overfilled_share(DesignRecord& record) const {
+  const cel::CelSolver& s = run_->solver();
+  const double grid = s.total_mass();
+  record.results.emplace_back(
+      "overfilled_mass_share",
+      Estimate{grid > 0.0 ? 100.0 * s.overfilled_mass() / grid : 0.0, "%", std::nullopt, std::nullopt,
+               "mass held above the density the cells' void ratio allows, at the end (carried along the walls' "
+               "staircase), share of the mass on the grid",
+               Rung::L2, ""});
+}
+
 }  // namespace feedflow

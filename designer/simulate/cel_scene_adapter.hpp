@@ -37,6 +37,9 @@ class CelSceneAdapter : public SceneAdapter {
   // "CEL-FEM plane strain (G-B hypoplastic, <remap> remap)".
   const std::string& model_label() const { return model_label_; }
   void add_throughput(DesignRecord& record) const;
+  // The share of the grid's mass held above the density its void ratio allows, at the end
+  // (carried along the walls' staircase; CelSolver::overfilled_mass).
+  void add_overfilled_share(DesignRecord& record) const;
 
   const SimulationRequest& request_;
 

@@ -245,6 +245,18 @@ double CelSolver::total_mass() const {
   return m;
 }
 
+double CelSolver::overfilled_mass() const {
+  const double rho_g = remap_.grain_density();
+  if (rho_g <= 0.0) return 0.0;
+  double m = 0.0;
+  for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
+    if (cells_.mass[c] <= 0.0) continue;
+    const double fits = cells_.volume_fraction[c] * grid_.cell_volume(c) * rho_g / (1.0 + cells_.void_ratio[c]);
+    m += std::max(cells_.mass[c] - fits, 0.0);
+  }
+  return m;
+}
+
 NodeVector CelSolver::total_momentum() const {
   NodeVector p = NodeVector::Zero();
   for (std::size_t a = 0; a < grid_.node_count(); ++a) p += nodes_.mass[a] * nodes_.velocity[a];

@@ -118,6 +118,10 @@ class CelSolver {
   long cell_updates() const { return cell_updates_; }
 
   double total_mass() const;          // [kg/m]
+  // Mass the cells hold beyond the density their void ratio allows, rho_g / (1 + e): what the
+  // walls' staircase cells carry on (remap_phase.hpp) and overpacked cells [kg/m]; 0 without a
+  // grain density.
+  double overfilled_mass() const;
   NodeVector total_momentum() const;  // nodal [kg m/s /m]
   double kinetic_energy() const;      // nodal [J/m]
   double removed_mass() const { return removed_mass_; }  // below the volume-fraction cut

@@ -29,10 +29,11 @@ bool said(const nlohmann::json& j, const std::string& text) {
 
 // 100 mm without a throughput target: nothing inside a band, auto escalates nothing (no runs).
 // 45 mm with 1.4 kg/s required (the rate's band 0.65-3.1 kg/s): MARGINAL, the command that would
-// settle it is named; with --verify auto and 10 min the 10 % plans (5 and 46 min) do not fit and
-// the verdict says so. Its arching is MARGINAL too (45 mm < 1.2 x the B_c band top, 50.6 mm): the
-// continuum cannot arch, so the command for the particle rung is named, with the user's settings
-// and its runs (the outlet, then 7 widths to bisect 20.5-42.2 mm to 1 mm).
+// settle it is named; with --verify auto and 10 min no plan meets 10 % (two levels: 3.6 min but
+// 14 %; three: 3.4 % but 30 min) and the verdict says so. Its arching is MARGINAL too (45 mm <
+// 1.2 x the B_c band top, 50.6 mm): the continuum cannot arch, so the command for the particle
+// rung is named, with the user's settings and its runs (the outlet, then 7 widths to bisect
+// 20.5-42.2 mm to 1 mm).
 TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const fs::path dir = scratch_folder("feedflow_verify", true);
   const auto clear = design_json(dir, "--set hopper.outlet_width=100mm --verify auto");

@@ -44,9 +44,13 @@ const Estimate* find(const DesignRecord& r, const std::string& name) {
 
 const char* kTwin = "tests/data/dem_hopper_twin.toml";
 
-// Seed 3.1.2 at 30 deg, W = 60 mm: the twin discharges steadily; its q_m (scaled from the slab
-// to the slot length) has an L3 interval that overlaps the reduced-model band, and the layer
-// bands leave first-in-first-out (the 30 deg, 8.5 deg-wall wedge is mass flow in the reduced model).
+// Seed 3.1.2 at 30 deg, W = 60 mm: the twin discharges steadily, and the layer bands leave
+// first-in-first-out (the 30 deg, 8.5 deg-wall wedge is mass flow in the reduced model). Its q_m
+// (scaled from the slab to the slot length) lies below the reduced rate, which is calibrated
+// against the continuum rung, by the particle rung's known shortfalls: on the pilot the DEM
+// (Hertz, 1.5 mm) gives 0.73 of the CEL reference (4.20 against 5.76 kg/s, RECORD.md), and the
+// twin's coarse grains (W/d = 10) cost Beverloo's (1 - 1.5 d / W)^1.5 = 0.79 against the reduced
+// model's fine grain: 0.57 expected, 0.53 measured (3.24 against 6.10 kg/s on 2026-12-05).
 TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
   const fs::path out = scratch("flow");
   const SimulationOutcome o = simulate(kTwin, {}, out);
@@ -58,8 +62,9 @@ TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
   EXPECT_GT(v, 0.0);
   EXPECT_LT(*q->low, v);
   EXPECT_GT(*q->high, v);
-  EXPECT_LT(*q->low, *reduced->high);
-  EXPECT_GT(*q->high, *reduced->low);
+  const double ratio = v / std::get<double>(reduced->value);
+  EXPECT_GT(ratio, 0.40);
+  EXPECT_LT(ratio, 0.75);
   EXPECT_NE(std::get<std::string>(find(o.record, "arching")->value), "arched");
   EXPECT_EQ(std::get<std::string>(find(o.record, "flow_pattern")->value), "mass");
   EXPECT_FALSE(o.series.empty());
@@ -114,8 +119,10 @@ TEST(DemHopperSimulation, RestartContinuesBitIdentically) {
 }
 
 // The full-size pilot hopper (cases/pilot_hopper.toml: 3 mm spheres, the seed's hysteretic
-// law, H = 0.68 m, ~30 000 spheres, dt 0.75 us): flows at W = 60 mm with a steady q_m whose
-// interval overlaps the reduced-model band. Hours of wall time: label `long`.
+// law, H = 0.68 m, ~30 000 spheres, dt 0.75 us): flows at W = 60 mm with a steady q_m below the
+// reduced rate calibrated against the continuum rung, by the particle rung's shortfall against
+// it (Hertz 4.20, the seed's law at P-W friction 0.2 4.03 kg/s against the CEL's 5.76 and the
+// reduced 6.10 kg/s, RECORD.md). Hours of wall time: label `long`.
 TEST(DemHopperSimulation, LONG_PilotHopperFlowsAtSixtyMillimetres) {
   const fs::path out = scratch("pilot");
   const SimulationOutcome o = simulate("cases/pilot_hopper.toml", {}, out);
@@ -123,8 +130,9 @@ TEST(DemHopperSimulation, LONG_PilotHopperFlowsAtSixtyMillimetres) {
   const Estimate* reduced = find(o.record, "mass_flow_rate_reduced_model");
   ASSERT_TRUE(q && reduced);
   EXPECT_EQ(q->rung, Rung::L3);
-  EXPECT_LT(*q->low, *reduced->high);
-  EXPECT_GT(*q->high, *reduced->low);
+  const double ratio = std::get<double>(q->value) / std::get<double>(reduced->value);
+  EXPECT_GT(ratio, 0.55);
+  EXPECT_LT(ratio, 0.90);
   EXPECT_NE(std::get<std::string>(find(o.record, "arching")->value), "arched");
 }
 

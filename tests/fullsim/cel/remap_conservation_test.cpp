@@ -168,6 +168,20 @@ TEST(CelRemap, StaircaseCellsAreNotCompacted) {
   EXPECT_NEAR(m / m0, 1.0, 1e-14);
 }
 
+// The overfilled mass is what the cells hold above rho_g / (1 + e): none in a block filled at
+// its void ratio, and half a cell's mass when one cell holds 1.5 times its share.
+TEST(CelRemap, OverfilledMassIsTheMassAboveTheVoidRatiosDensity) {
+  CelSolver s(make_plane_strain_grid(6, 4, 0.01), pine(), CelOptions{});
+  s.add_material({{0.0, 0.0}, {0.06, 0.03}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
+  EXPECT_NEAR(s.overfilled_mass() / s.total_mass(), 0.0, 1e-12);
+  CelSolverState state = s.state();
+  const std::size_t c = s.grid().cell(2, 1);
+  const double m = state.cells.mass[c];
+  state.cells.mass[c] = 1.5 * m;
+  s.restore(state);
+  EXPECT_NEAR(s.overfilled_mass() / m, 0.5, 1e-12);
+}
+
 // The cell, node and remap loops run on OpenMP threads above kParallelThreshold items; each
 // item's result does not depend on the thread count, so a block of 1 350 cells collapsing in a
 // 60 x 40 box (second-order state and momentum, PLIC) gives the same bits on 1 and 2 threads.
