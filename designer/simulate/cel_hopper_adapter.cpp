@@ -142,14 +142,14 @@ class CelHopperAdapter final : public CelSceneAdapter {
         cone() ? std::string("Axisymmetric (r, z) about the cone's axis: hoop strain rate and stress in the element, "
                              "r-weighted volumes in the remap, the circular outlet on the axis; the rate per radian "
                              "is multiplied by 2 pi. Swirl and flow off the axis' symmetry (asymmetric arches, "
-                             "rat-holes) are not represented. The mass/funnel boundary on this grid: the pilot cone "
-                             "(8.5 deg walls) is in mass flow at 20-30 deg and in funnel flow from 45 deg at every "
-                             "cell size; at 40 deg it reads mass flow at 10 mm cells but funnel flow at 5 and 2.5 mm "
-                             "(a dead zone of 40 and 65 mm), and at 35 deg funnel flow at 5 mm. So the boundary "
-                             "lies near 35 deg on fine grids, below the Arnold-McLean limit (39.6 deg) and the DEM's "
-                             "(about 47 deg), and a reading within 10 deg of the limit on 10 mm cells is uncertain. "
-                             "A funnel-flow channel follows the grid's columns and runs fast on coarse cells "
-                             "(45 deg: 0.62 kg/s at 10 mm, 0.45 kg/s at 5 mm).")
+                             "rat-holes) are not represented. The flow pattern on this grid does not converge: the pilot "
+                             "cone's (8.5 deg walls) wall zone slows as the cells shrink: wall/centre speed at 20 deg "
+                             "0.69, 0.71, 0.38, at 30 deg 0.39, 0.23, 0.079 (mass flow turning to funnel flow) and at "
+                             "40 deg 0.14, 0.019, 0.007 at 10, 5 and 2.5 mm cells; funnel flow from 45 deg at every size. Arnold-McLean puts the limit "
+                             "at 39.6 deg and the DEM near 47 deg: read the CEL's flow pattern on a cone as a "
+                             "pessimistic indication, not an answer (design --verify does not use it). A funnel-flow "
+                             "channel follows the grid's columns and runs fast on coarse cells (45 deg: 0.62 kg/s at "
+                             "10 mm, 0.45 kg/s at 5 mm).")
         : std::string(section_ == cel::HopperSection::full
                         ? "Plane strain full-width section, both walls ([cel] hopper_section = "
                           "full): the rate per metre is "

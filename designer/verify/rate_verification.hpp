@@ -47,8 +47,9 @@ RateVerification verify_rate(const std::string& case_file, const std::vector<std
 // The record with the verified rate: mass_flow_rate becomes the CEL estimate (rung L2),
 // mass_flow_rate_reduced_model keeps the reduced one, the verdict is judged again and a note
 // says "verified" (the reduced band and the CEL interval overlap) or "contradicted" with the numbers.
-// The same runs show the flow pattern (wall-to-centre speed ratio of the finest level): it
-// stands beside the reduced one the same way.
+// The same runs show the flow pattern (wall-to-centre speed ratio of the finest level): on a
+// wedge it stands beside the reduced one the same way; on a cone it is shown beside the reduced
+// one (flow_pattern_continuum), which stays: the axisymmetric grid's reading does not converge.
 void apply_rate_verification(const Case& c, const RateVerification& v, DesignRecord& record);
 
 }  // namespace feedflow

@@ -64,18 +64,19 @@ TEST_F(SimulateConeCel, PilotConeDischargesOnTheAxisymmetricGrid) {
   EXPECT_LT(overfilled, 25.0);
   EXPECT_EQ(results.at("flow_pattern").at("value"), "mass");
   EXPECT_GT(results.at("wall_to_centre_speed_ratio").at("value").get<double>(), 0.3);
-  bool bounded = false;
+  bool caveat = false;  // the flow pattern's non-convergence on the axisymmetric grid is said
   for (const auto& a : json.at("assumptions"))
-    bounded = bounded || a.get<std::string>().find("The mass/funnel boundary on this grid: the pilot cone") != std::string::npos;
-  EXPECT_TRUE(bounded);
+    caveat = caveat || a.get<std::string>().find("The flow pattern on this grid does not converge") != std::string::npos;
+  EXPECT_TRUE(caveat);
 }
 
-// The mass/funnel boundary on the axisymmetric grid: the pilot cone (8.5 deg walls, 10 mm cells,
-// filled 0.42 m above the outlet) flows in mass flow at 30 deg and in funnel flow at 45 deg, on
-// either side of the Arnold-McLean conical limit the reduced rung computes (39.6 deg). Measured
-// wall/centre speed ratios: 0.69 at 20, 0.39 at 30, 0.14 at 40, 0.006 at 45 deg (at 5 mm: 0.23
-// at 30, 0.034 at 35, 0.019 at 40, 0.016 at 45 deg; at 2.5 mm 0.007 at 40 deg: on fine grids the
-// CEL's transition lies at 30-35 deg, the DEM's near 47 deg).
+// The mass/funnel boundary on the axisymmetric grid at the default 10 mm cells: the pilot cone
+// (8.5 deg walls, filled 0.42 m above the outlet) flows in mass flow at 30 deg and in funnel flow
+// at 45 deg, on either side of the Arnold-McLean conical limit the reduced rung computes (39.6
+// deg). Measured wall/centre speed ratios: 0.69 at 20, 0.39 at 30, 0.14 at 40, 0.006 at 45 deg.
+// This holds on 10 mm cells only: the wall zone slows as the cells shrink (20 deg: 0.71 at 5 mm,
+// 0.38 at 2.5 mm; 30 deg: 0.23, 0.079; 40 deg: 0.019, 0.007), which is why design --verify does
+// not use the pattern.
 TEST_F(SimulateConeCel, MassAndFunnelFlowOnEitherSideOfTheConicalLimit) {
   for (const auto& [angle, pattern] : {std::pair{30.0, "mass"}, std::pair{45.0, "funnel"}}) {
     const double fill = 0.42 + 0.03 / std::tan(angle * std::numbers::pi / 180.0);

@@ -87,12 +87,13 @@ TEST(RateVerification, AgreementIsTheOverlapOfBandAndInterval) {
   EXPECT_TRUE(said(contradicted, "mass flow rate contradicted"));
 }
 
-// On a cone the CEL rate and flow pattern replace the reduced ones, as on a wedge: the
-// axisymmetric grid brackets the pilot cone's mass/funnel boundary (mass at 30 deg, funnel at
-// 45 deg against Arnold-McLean's 39.6 deg). A CEL reading of funnel flow where the reduced
-// rung reads mass flow is a contradiction, said with the CEL's reading; the reduced pattern
-// stays beside it.
-TEST(RateVerification, ConeFlowPatternIsVerifiedLikeTheWedges) {
+// On a cone the CEL rate replaces the reduced one, as on a wedge, but its flow pattern does not:
+// on the axisymmetric grid the pilot cone's wall zone slows as the cells shrink (wall/centre at
+// 10, 5, 2.5 mm: 20 deg 0.69, 0.71, 0.38; 30 deg 0.39, 0.23, 0.079, mass flow turning to funnel
+// flow against Arnold-McLean's 39.6 deg and the DEM's 47 deg), so the CEL's pattern is shown
+// beside the reduced one (flow_pattern_continuum), which stays, and the verdict says it is not
+// verified.
+TEST(RateVerification, ConeFlowPatternIsShownNotVerified) {
   const Case c = load_case("cases/conical_hopper.toml");
   const DesignRecord design = design_check(c);
   ASSERT_EQ(std::get<std::string>(find_estimate(design.results, "flow_pattern")->value), "mass");
@@ -108,15 +109,17 @@ TEST(RateVerification, ConeFlowPatternIsVerifiedLikeTheWedges) {
     EXPECT_EQ(find_estimate(verified.results, "mass_flow_rate")->rung, Rung::L2);
     const Estimate* pattern = find_estimate(verified.results, "flow_pattern");
     ASSERT_NE(pattern, nullptr);
-    EXPECT_EQ(pattern->rung, Rung::L2);
-    EXPECT_EQ(std::get<std::string>(pattern->value), cel);
-    const Estimate* reduced = find_estimate(verified.results, reduced_model_key("flow_pattern"));
-    ASSERT_NE(reduced, nullptr);
-    EXPECT_EQ(std::get<std::string>(reduced->value), "mass");
-    const std::string expected = cel == "mass" ? "flow pattern verified on the continuum rung: reduced mass, CEL mass"
-                                               : "flow pattern contradicted on the continuum rung: reduced mass, CEL funnel";
+    EXPECT_EQ(pattern->rung, Rung::L0);
+    EXPECT_EQ(std::get<std::string>(pattern->value), "mass");
+    const Estimate* shown = find_estimate(verified.results, "flow_pattern_continuum");
+    ASSERT_NE(shown, nullptr);
+    EXPECT_EQ(shown->rung, Rung::L2);
+    EXPECT_EQ(std::get<std::string>(shown->value), cel);
+    EXPECT_EQ(find_estimate(verified.results, reduced_model_key("flow_pattern")), nullptr);
     bool said = false;
-    for (const auto& x : verified.verdict.reasons) said = said || x.find(expected) != std::string::npos;
+    for (const auto& x : verified.verdict.reasons)
+      said = said || x.find("flow pattern not verified on the continuum rung: CEL " + cel + ", reduced mass") !=
+                         std::string::npos;
     EXPECT_TRUE(said) << cel;
   }
 }
