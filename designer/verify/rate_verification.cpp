@@ -50,8 +50,8 @@ std::string verify_flow_pattern(const RateVerification& v, bool cone, Estimates&
   if (cone) {
     results.emplace(it + 1, "flow_pattern_continuum", cel);
     return "flow pattern not verified on the continuum rung: CEL " + v.flow_pattern + ", reduced " + before +
-           " (kept). On the axisymmetric grid the cone's wall zone slows as the cells shrink (30 deg, 8.5 deg "
-           "walls: wall/centre speed 0.39, 0.23, 0.079 at 10, 5, 2.5 mm cells; mass flow turns to funnel flow), "
+           " (kept). On the axisymmetric grid the cone's wall zone slows as the cells shrink, mass flow on coarse "
+           "cells turning to funnel flow on fine ones (the CEL run's assumptions give the measured ratios), "
            "so the CEL's pattern on a cone is shown, not used";
   }
   it->second = cel;

@@ -89,8 +89,8 @@ TEST(RateVerification, AgreementIsTheOverlapOfBandAndInterval) {
 
 // On a cone the CEL rate replaces the reduced one, as on a wedge, but its flow pattern does not:
 // on the axisymmetric grid the pilot cone's wall zone slows as the cells shrink (wall/centre at
-// 10, 5, 2.5 mm: 20 deg 0.69, 0.71, 0.38; 30 deg 0.39, 0.23, 0.079, mass flow turning to funnel
-// flow against Arnold-McLean's 39.6 deg and the DEM's 47 deg), so the CEL's pattern is shown
+// 10, 5, 2.5 mm: 20 deg 0.69, 0.71, 0.38; 30 deg 0.39, 0.23, 0.079, and 0.019 in funnel flow at
+// 1.25 mm, against Arnold-McLean's 39.6 deg and the DEM's 47 deg), so the CEL's pattern is shown
 // beside the reduced one (flow_pattern_continuum), which stays, and the verdict says it is not
 // verified.
 TEST(RateVerification, ConeFlowPatternIsShownNotVerified) {
