@@ -1,8 +1,8 @@
 // feedflow: design checks and verification simulations for bulk-solids handling equipment.
-#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
 
+#include "designer/cli/command_line.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/exit_codes.hpp"
 #include "designer/cli/invocation.hpp"
@@ -12,33 +12,24 @@
 int main(int argc, char** argv) {
   using namespace feedflow;
   record_invocation(argc, argv);
-  CLI::App app{"feedflow: hopper, chute and drum design for bulk solids, verified by simulation",
-               "feedflow"};
-  app.set_version_flag("--version", std::string("feedflow ") + kVersion);
-  app.require_subcommand(1);
+  CommandLine command_line{
+      "feedflow: hopper, chute and drum design for bulk solids, verified by simulation", "feedflow",
+      std::string("feedflow ") + kVersion};
+  Command program = command_line.root();
   int exit_code = kExitOk;
-  add_design_command(app, exit_code);
-  add_materials_command(app, exit_code);
-  add_cases_command(app, exit_code);
-  add_version_command(app, exit_code);
-  add_report_command(app, exit_code);
-  add_element_test_command(app, exit_code);
-  add_simulate_command(app, exit_code);
-  add_bench_command(app, exit_code);
-  add_calibrate_command(app, exit_code);
-  add_sweep_command(app, exit_code);
+  add_design_command(program, exit_code);
+  add_materials_command(program, exit_code);
+  add_cases_command(program, exit_code);
+  add_version_command(program, exit_code);
+  add_report_command(program, exit_code);
+  add_element_test_command(program, exit_code);
+  add_simulate_command(program, exit_code);
+  add_bench_command(program, exit_code);
+  add_calibrate_command(program, exit_code);
+  add_sweep_command(program, exit_code);
 
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kExitBadInput;
+    if (const auto settled = command_line.parse_and_run(argc, argv, kExitBadInput)) return *settled;
   } catch (const InputError& e) {
     std::cerr << "feedflow: error: " << e.what() << '\n';
     return kExitBadInput;

@@ -272,33 +272,40 @@ int run_bench(const BenchArguments& args) {
 
 }  // namespace
 
-void add_bench_command(CLI::App& app, int& exit_code) {
+void add_bench_command(Command& program, int& exit_code) {
   auto args = std::make_shared<BenchArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "bench", "run time against error for every rung and setting of the seed's design questions");
-  command->add_flag("--quick", args->quick, "coarse points only (minutes); the full bench takes hours");
-  command->add_flag("--list", args->list, "list the questions and the runs of each, then stop");
-  command->add_flag("--report", args->report, "also write report.pdf and report.html (one chart per question)");
-  command->add_flag("--tabulate", args->tabulate, "make no runs: tabulate the runs already in the output folder");
-  command->add_flag("--measured", args->measured,
-                    "show the bench table shipped with feedflow: each question's reference and the cheapest "
-                    "measured setting within --tolerance");
-  command->add_option("--tolerance", args->tolerance, "error allowed against the reference, for --measured")
-      ->capture_default_str()
-      ->type_name("FRACTION");
-  command->add_option("--only", args->only, "question ids to run (default: all; see --list)")
-      ->delimiter(',')
-      ->type_name("ID[,ID...]");
-  command->add_option("--rungs", args->rungs, "rungs to run (default: all), e.g. L0,L1 for the reduced models")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"L0", "L1", "L2", "L3"}))
-      ->type_name("RUNG[,RUNG...]");
-  command->add_option("--out", args->options.out,
-                      "output folder (default out/bench); runs already in it are read back, not run again")
-      ->type_name("DIR");
-  add_json_option(*command, args->options, "the bench JSON");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] { exit_code = run_bench(*args); });
+  command.flag("--quick", args->quick, "coarse points only (minutes); the full bench takes hours");
+  command.flag("--list", args->list, "list the questions and the runs of each, then stop");
+  command.flag("--report", args->report,
+               "also write report.pdf and report.html (one chart per question)");
+  command.flag("--tabulate", args->tabulate,
+               "make no runs: tabulate the runs already in the output folder");
+  command.flag(
+      "--measured", args->measured,
+      "show the bench table shipped with feedflow: each question's reference and the cheapest "
+      "measured setting within --tolerance");
+  command
+      .option("--tolerance", args->tolerance, "error allowed against the reference, for --measured")
+      .show_default()
+      .type_name("FRACTION");
+  command.option("--only", args->only, "question ids to run (default: all; see --list)")
+      .delimiter(',')
+      .type_name("ID[,ID...]");
+  command
+      .option("--rungs", args->rungs,
+              "rungs to run (default: all), e.g. L0,L1 for the reduced models")
+      .delimiter(',')
+      .one_of({"L0", "L1", "L2", "L3"})
+      .type_name("RUNG[,RUNG...]");
+  command
+      .option("--out", args->options.out,
+              "output folder (default out/bench); runs already in it are read back, not run again")
+      .type_name("DIR");
+  add_json_option(command, args->options, "the bench JSON");
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] { exit_code = run_bench(*args); });
 }
 
 }  // namespace feedflow

@@ -221,47 +221,58 @@ int run_calibrate(const CalibrateArguments& args) {
 
 }  // namespace
 
-void add_calibrate_command(CLI::App& app, int& exit_code) {
+void add_calibrate_command(Command& program, int& exit_code) {
   auto args = std::make_shared<CalibrateArguments>();
-  auto* command = app.add_subcommand(
-      "calibrate", "fit the reduced models' discharge coefficients to a full rung over a design of experiments");
-  command->add_option("material", args->material, "the material to calibrate (see `feedflow materials`)")->required();
-  command->add_option("--against", args->against, "the full rung to fit to")
-      ->required()
-      ->check(CLI::IsMember({"cel", "dem"}));
-  command->add_option("--case", args->case_file, "the hopper case whose outlet and semi-angle are varied")
-      ->capture_default_str()
-      ->type_name("FILE");
-  command->add_option("--outlet-widths", args->outlet_widths, "outlet widths of the fitted grid")
-      ->capture_default_str()
-      ->type_name("LIST");
-  command->add_option("--semi-angles", args->semi_angles, "semi-angles of the fitted grid")
-      ->capture_default_str()
-      ->type_name("LIST");
-  command->add_option("--held-out", args->held_out, "points left out of the fit to test it (WIDTH@ANGLE,...; none)")
-      ->capture_default_str()
-      ->type_name("LIST");
-  command->add_option("--cells-across", args->cells_across,
-                      "CEL levels: cells across the half outlet, each twice the last (Richardson)")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->type_name("N[,N...]");
-  command->add_option("--order", args->order,
-                      "order two CEL levels extrapolate with (default: the order in the shipped bench table)");
-  command->add_option("--time", args->time, "simulated time of each run after the opening (as the bench measured)")
-      ->capture_default_str()
-      ->type_name("TIME");
-  command->add_option("--write", args->write,
-                      "material file to write (default: the material's own file; a built-in material: "
-                      "OUT/<name>.toml)")
-      ->type_name("FILE");
-  command->add_flag("--list", args->list, "list the runs the calibration makes, then stop");
-  command->add_option("--out", args->options.out,
-                      "output folder (default out/calibrate/<material>); runs already in it are read back")
-      ->type_name("DIR");
-  add_json_option(*command, args->options, "the calibration JSON");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] { exit_code = run_calibrate(*args); });
+  auto command = program.subcommand(
+      "calibrate",
+      "fit the reduced models' discharge coefficients to a full rung over a design of experiments");
+  command.option("material", args->material, "the material to calibrate (see `feedflow materials`)")
+      .required();
+  command.option("--against", args->against, "the full rung to fit to")
+      .required()
+      .one_of({"cel", "dem"});
+  command
+      .option("--case", args->case_file, "the hopper case whose outlet and semi-angle are varied")
+      .show_default()
+      .type_name("FILE");
+  command.option("--outlet-widths", args->outlet_widths, "outlet widths of the fitted grid")
+      .show_default()
+      .type_name("LIST");
+  command.option("--semi-angles", args->semi_angles, "semi-angles of the fitted grid")
+      .show_default()
+      .type_name("LIST");
+  command
+      .option("--held-out", args->held_out,
+              "points left out of the fit to test it (WIDTH@ANGLE,...; none)")
+      .show_default()
+      .type_name("LIST");
+  command
+      .option("--cells-across", args->cells_across,
+              "CEL levels: cells across the half outlet, each twice the last (Richardson)")
+      .delimiter(',')
+      .show_default()
+      .type_name("N[,N...]");
+  command.option(
+      "--order", args->order,
+      "order two CEL levels extrapolate with (default: the order in the shipped bench table)");
+  command
+      .option("--time", args->time,
+              "simulated time of each run after the opening (as the bench measured)")
+      .show_default()
+      .type_name("TIME");
+  command
+      .option("--write", args->write,
+              "material file to write (default: the material's own file; a built-in material: "
+              "OUT/<name>.toml)")
+      .type_name("FILE");
+  command.flag("--list", args->list, "list the runs the calibration makes, then stop");
+  command
+      .option("--out", args->options.out,
+              "output folder (default out/calibrate/<material>); runs already in it are read back")
+      .type_name("DIR");
+  add_json_option(command, args->options, "the calibration JSON");
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] { exit_code = run_calibrate(*args); });
 }
 
 }  // namespace feedflow

@@ -54,13 +54,14 @@ int list_cases(const CasesArguments& args) {
 
 }  // namespace
 
-void add_cases_command(CLI::App& app, int& exit_code) {
+void add_cases_command(Command& program, int& exit_code) {
   auto args = std::make_shared<CasesArguments>();
-  auto* command = app.add_subcommand("cases", "list the case files with a one-line description each");
-  command->add_option("--dir", args->folder, "folder to list (default: ./cases)")->type_name("DIR");
-  add_json_option(*command, args->options, "the case list as JSON");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] { exit_code = list_cases(*args); });
+  auto command =
+      program.subcommand("cases", "list the case files with a one-line description each");
+  command.option("--dir", args->folder, "folder to list (default: ./cases)").type_name("DIR");
+  add_json_option(command, args->options, "the case list as JSON");
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] { exit_code = list_cases(*args); });
 }
 
 }  // namespace feedflow

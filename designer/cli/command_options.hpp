@@ -1,9 +1,9 @@
 #pragma once
 // Options every computing subcommand shares: --set, --json, --out, -q, -v.
-#include <CLI/CLI.hpp>
 #include <iosfwd>
 #include <string>
 #include <vector>
+#include "designer/cli/command_line.hpp"
 
 #include "models/core/design_record.hpp"
 
@@ -23,11 +23,11 @@ struct CommandOptions {
 };
 
 // -q and -v; `has_json`: the command has --json (whose '-' copy -q keeps).
-void add_verbosity_options(CLI::App& command, CommandOptions& options, bool has_json);
+void add_verbosity_options(Command& command, CommandOptions& options, bool has_json);
 // --json FILE; `what` names what is written: "the results JSON".
-void add_json_option(CLI::App& command, CommandOptions& options, const std::string& what);
+void add_json_option(Command& command, CommandOptions& options, const std::string& what);
 // All of the above + --set, --out and --fail-on; `default_folder` says where --out defaults to.
-void add_case_options(CLI::App& command, CommandOptions& options, const std::string& default_folder);
+void add_case_options(Command& command, CommandOptions& options, const std::string& default_folder);
 
 // The exit code of a finished check: kExitVerdict when --fail-on asks for it and the verdict is
 // that bad or worse (fail > marginal; unknown counts as marginal), else kExitOk.

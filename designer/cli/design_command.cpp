@@ -97,37 +97,37 @@ int run_design(const DesignArguments& args) {
 
 }  // namespace
 
-void add_design_command(CLI::App& app, int& exit_code) {
+void add_design_command(Command& program, int& exit_code) {
   auto args = std::make_shared<DesignArguments>();
-  auto* command =
-      app.add_subcommand("design", "answer the design questions of a case from the reduced models");
-  command->add_option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
-      ->required()
-      ->type_name("CASE");
-  add_case_options(*command, args->options,
+  auto command =
+      program.subcommand("design", "answer the design questions of a case from the reduced models");
+  command.option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
+      .required()
+      .type_name("CASE");
+  add_case_options(command, args->options,
                    "out/<case name>; none with --json - unless --report asks for one");
-  command->add_flag("--report", args->report, "also write report.pdf and report.html");
+  command.flag("--report", args->report, "also write report.pdf and report.html");
   command
-      ->add_option(
+      .option(
           "--verify", args->verify,
           "verify on a full rung: auto (the quantities whose decision is inside their band, on "
           "the seed's rung), cel (a hopper's discharge rate; a chute's or drum's answers from one "
           "continuum run), dem (a hopper's arching: at the outlet, and the critical width by "
           "bisection; a drum's or chute's answers from one particle run), off")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"off", "auto", "cel", "dem"}))
-      ->type_name("RUNG");
-  command->add_option("--budget", args->budget, "wall time a verification may take")
-      ->capture_default_str()
-      ->type_name("TIME");
-  command->add_option("--tolerance", args->tolerance, "error bar a verification must reach")
-      ->capture_default_str()
-      ->type_name("FRACTION");
+      .show_default()
+      .one_of({"off", "auto", "cel", "dem"})
+      .type_name("RUNG");
+  command.option("--budget", args->budget, "wall time a verification may take")
+      .show_default()
+      .type_name("TIME");
+  command.option("--tolerance", args->tolerance, "error bar a verification must reach")
+      .show_default()
+      .type_name("FRACTION");
   command
-      ->add_option("--width-tolerance", args->width_tolerance,
-                   "--verify dem: width of the bracket the bisection on the outlet width stops at")
-      ->capture_default_str()
-      ->type_name("WIDTH");
+      .option("--width-tolerance", args->width_tolerance,
+              "--verify dem: width of the bracket the bisection on the outlet width stops at")
+      .show_default()
+      .type_name("WIDTH");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";
@@ -139,11 +139,8 @@ void add_design_command(CLI::App& app, int& exit_code) {
       model_help += "\n      " + std::string(e.name) + ": " + std::string(e.summary) + " [" +
                     to_string(e.rung) + "]";
   }
-  command->add_option("--model", args->models, model_help)
-      ->type_name("KEY=NAME")
-      ->take_all()
-      ->allow_extra_args(false);
-  command->callback([args, &exit_code] { exit_code = run_design(*args); });
+  command.option("--model", args->models, model_help).type_name("KEY=NAME").repeatable();
+  command.on_run([args, &exit_code] { exit_code = run_design(*args); });
 }
 
 }  // namespace feedflow

@@ -197,34 +197,38 @@ int run_element_test_command(const ElementTestArguments& args) {
 
 }  // namespace
 
-void add_element_test_command(CLI::App& app, int& exit_code) {
+void add_element_test_command(Command& program, int& exit_code) {
   auto args = std::make_shared<ElementTestArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "element-test",
       "run a laboratory element test (triaxial, oedometer, ...) of a material's hypoplastic law");
-  command->add_option("material", args->material, "material name, e.g. loblolly_pine")
-      ->required()
-      ->type_name("MATERIAL");
-  command->add_option("--test", args->test, "test: " + known_tests() + " (default triaxial)")
-      ->type_name("NAME");
-  command->add_option("--p0", args->p0, "initial isotropic mean pressure (default 2 kPa)")
-      ->type_name("PRESSURE");
-  command->add_option("--e0", args->e0,
-                      "initial void ratio, within [e_d(p0), e_i(p0)] (default e_c(p0))")
-      ->type_name("RATIO");
-  command->add_option("--strain", args->strain,
-                      "axial strain (volumetric for isotropic, gamma for simple shear; default 20 %)")
-      ->type_name("STRAIN");
-  command->add_option("--variant", args->variant,
-                      "rate law: gudehus-bauer (the seed's, default) or von-wolffersdorff")
-      ->type_name("NAME");
-  command->add_option("--cycles", args->cycles, "cycles of cyclic_oedometric (default 3)");
-  command->add_option("--samples", args->samples, "output points per loading stage (default 200)");
-  add_json_option(*command, args->options, "the summary JSON");
-  command->add_option("--out", args->options.out, "output folder (default out/element_test_<test>; none with --json -)")
-      ->type_name("DIR");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] { exit_code = run_element_test_command(*args); });
+  command.option("material", args->material, "material name, e.g. loblolly_pine")
+      .required()
+      .type_name("MATERIAL");
+  command.option("--test", args->test, "test: " + known_tests() + " (default triaxial)")
+      .type_name("NAME");
+  command.option("--p0", args->p0, "initial isotropic mean pressure (default 2 kPa)")
+      .type_name("PRESSURE");
+  command
+      .option("--e0", args->e0, "initial void ratio, within [e_d(p0), e_i(p0)] (default e_c(p0))")
+      .type_name("RATIO");
+  command
+      .option("--strain", args->strain,
+              "axial strain (volumetric for isotropic, gamma for simple shear; default 20 %)")
+      .type_name("STRAIN");
+  command
+      .option("--variant", args->variant,
+              "rate law: gudehus-bauer (the seed's, default) or von-wolffersdorff")
+      .type_name("NAME");
+  command.option("--cycles", args->cycles, "cycles of cyclic_oedometric (default 3)");
+  command.option("--samples", args->samples, "output points per loading stage (default 200)");
+  add_json_option(command, args->options, "the summary JSON");
+  command
+      .option("--out", args->options.out,
+              "output folder (default out/element_test_<test>; none with --json -)")
+      .type_name("DIR");
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] { exit_code = run_element_test_command(*args); });
 }
 
 }  // namespace feedflow

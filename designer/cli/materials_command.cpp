@@ -62,15 +62,15 @@ void show_material(const MaterialLibrary& library, const std::string& name,
 
 }  // namespace
 
-void add_materials_command(CLI::App& app, int& exit_code) {
+void add_materials_command(Command& program, int& exit_code) {
   auto args = std::make_shared<MaterialsArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "materials", "list the known materials, or show every parameter of one with unit and source");
-  command->add_option("name", args->name, "material to show, e.g. loblolly_pine")->type_name("NAME");
-  add_json_option(*command, args->options,
+  command.option("name", args->name, "material to show, e.g. loblolly_pine").type_name("NAME");
+  add_json_option(command, args->options,
                   "the material list (or the named material's parameters) as JSON");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] {
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] {
     const auto library = MaterialLibrary::standard();
     if (args->options.verbose)
       for (const auto& f : library.folders())

@@ -56,17 +56,17 @@ int run_report(const ReportArguments& args) {
 
 }  // namespace
 
-void add_report_command(CLI::App& app, int& exit_code) {
+void add_report_command(Command& program, int& exit_code) {
   auto args = std::make_shared<ReportArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "report", "write the PDF and HTML design report of a results JSON (from design or simulate)");
-  command->add_option("input", args->input, "results.json written by design or simulate")
-      ->required()
-      ->type_name("FILE");
-  command->add_option("--out", args->options.out, "output folder (default: the input's folder)")
-      ->type_name("DIR");
-  add_verbosity_options(*command, args->options, false);
-  command->callback([args, &exit_code] { exit_code = run_report(*args); });
+  command.option("input", args->input, "results.json written by design or simulate")
+      .required()
+      .type_name("FILE");
+  command.option("--out", args->options.out, "output folder (default: the input's folder)")
+      .type_name("DIR");
+  add_verbosity_options(command, args->options, false);
+  command.on_run([args, &exit_code] { exit_code = run_report(*args); });
 }
 
 }  // namespace feedflow

@@ -149,27 +149,29 @@ int run_simulate(const SimulateArguments& args) {
 
 }  // namespace
 
-void add_simulate_command(CLI::App& app, int& exit_code) {
+void add_simulate_command(Command& program, int& exit_code) {
   auto args = std::make_shared<SimulateArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "simulate", "verify a case with a full simulation: particles (DEM) or continuum (CEL-FEM)");
-  command->add_option("case", args->case_file, "case file (TOML), e.g. cases/rotating_drum_20rpm.toml")
-      ->required()
-      ->type_name("CASE");
-  command->add_option("--solver", args->solver,
-                      "dem (particles, rung L3) or cel (CEL-FEM continuum, rung L2); default: "
-                      "the seed's rule (continuum for hoppers and chutes, particles for drums)")
-      ->type_name("NAME");
-  command->add_option("--time", args->time,
-                      "simulated time after filling, with its unit (e.g. 2s); default: until the "
-                      "measured quantity has converged or the flow has stopped")
-      ->type_name("TIME");
-  command->add_option("--restart", args->restart, "continue the run saved in this checkpoint")
-      ->type_name("FILE");
-  add_case_options(*command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
-  command->add_flag("--report", args->report,
-                    "also write report.pdf and report.html, with pictures of the simulation");
-  command->callback([args, &exit_code] {
+  command.option("case", args->case_file, "case file (TOML), e.g. cases/rotating_drum_20rpm.toml")
+      .required()
+      .type_name("CASE");
+  command
+      .option("--solver", args->solver,
+              "dem (particles, rung L3) or cel (CEL-FEM continuum, rung L2); default: "
+              "the seed's rule (continuum for hoppers and chutes, particles for drums)")
+      .type_name("NAME");
+  command
+      .option("--time", args->time,
+              "simulated time after filling, with its unit (e.g. 2s); default: until the "
+              "measured quantity has converged or the flow has stopped")
+      .type_name("TIME");
+  command.option("--restart", args->restart, "continue the run saved in this checkpoint")
+      .type_name("FILE");
+  add_case_options(command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
+  command.flag("--report", args->report,
+               "also write report.pdf and report.html, with pictures of the simulation");
+  command.on_run([args, &exit_code] {
     // A run shared among ranks fails on every rank alike: the first says why.
     try {
       exit_code = run_simulate(*args);

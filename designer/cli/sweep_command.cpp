@@ -294,90 +294,84 @@ int run_sweep(const SweepArguments& args) {
 
 }  // namespace
 
-void add_sweep_command(CLI::App& app, int& exit_code) {
+void add_sweep_command(Command& program, int& exit_code) {
   auto args = std::make_shared<SweepArguments>();
-  auto* command = app.add_subcommand(
+  auto command = program.subcommand(
       "sweep",
       "what-if analysis: the design check over a grid, a sample or a solve, in this process; "
       "with --rung or --verify each point simulated, shared among MPI ranks");
-  command->add_option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
-      ->required()
-      ->type_name("CASE");
+  command.option("case", args->case_file, "case file (TOML), e.g. cases/pilot_hopper.toml")
+      .required()
+      .type_name("CASE");
   command
-      ->add_option("--vary", args->vary,
-                   "a case key and its values (repeatable; several make a grid): "
-                   "hopper.semi_angle=15..40deg/5deg (step), hopper.outlet_width=20..100mm:9 "
-                   "(count), :5log (log spacing), \"hopper.fill_height=0.2,0.3,0.5 m\" (list), "
-                   "material=loblolly_pine,NAME (words)")
-      ->type_name("KEY=RANGE")
-      ->take_all()
-      ->allow_extra_args(false);
+      .option("--vary", args->vary,
+              "a case key and its values (repeatable; several make a grid): "
+              "hopper.semi_angle=15..40deg/5deg (step), hopper.outlet_width=20..100mm:9 "
+              "(count), :5log (log spacing), \"hopper.fill_height=0.2,0.3,0.5 m\" (list), "
+              "material=loblolly_pine,NAME (words)")
+      .type_name("KEY=RANGE")
+      .repeatable();
   command
-      ->add_option("--solve-for", args->solve_for,
-                   "at each point of the --vary grid, the value of KEY that meets --target, by "
-                   "scanning its range (KEY=RANGE, or its --vary) and bisection")
-      ->type_name("KEY[=RANGE]");
+      .option("--solve-for", args->solve_for,
+              "at each point of the --vary grid, the value of KEY that meets --target, by "
+              "scanning its range (KEY=RANGE, or its --vary) and bisection")
+      .type_name("KEY[=RANGE]");
   command
-      ->add_option("--target", args->target,
-                   "what --solve-for looks for: pass, not-fail, RESULT>=VALUE (e.g. "
-                   "mass_flow_rate>=5kg/s; >, <=, <, = its crossing; RESULT.low, RESULT.high), "
-                   "RESULT=WORD (flow_pattern=mass, regime!=rolling)")
-      ->type_name("CONDITION");
+      .option("--target", args->target,
+              "what --solve-for looks for: pass, not-fail, RESULT>=VALUE (e.g. "
+              "mass_flow_rate>=5kg/s; >, <=, <, = its crossing; RESULT.low, RESULT.high), "
+              "RESULT=WORD (flow_pattern=mass, regime!=rolling)")
+      .type_name("CONDITION");
   command
-      ->add_option("--solve-tolerance", args->solve_tolerance,
-                   "the solved value's bracket width (default a thousandth of its range)")
-      ->type_name("VALUE");
+      .option("--solve-tolerance", args->solve_tolerance,
+              "the solved value's bracket width (default a thousandth of its range)")
+      .type_name("VALUE");
   command
-      ->add_option("--sample", args->sample,
-                   "lhs:N[:SEED]: a Latin hypercube of N points over the --vary ranges instead "
-                   "of their grid (seeded: the same points every run)")
-      ->type_name("lhs:N");
+      .option("--sample", args->sample,
+              "lhs:N[:SEED]: a Latin hypercube of N points over the --vary ranges instead "
+              "of their grid (seeded: the same points every run)")
+      .type_name("lhs:N");
   command
-      ->add_option("--rung", args->rung,
-                   "L0 (default: the design check, in this process), L2 (each point a CEL-FEM "
-                   "simulation) or L3 (DEM); simulated points are shared among the ranks of "
-                   "mpirun -np N, each in its own folder, and read back when the sweep is run "
-                   "again")
-      ->type_name("L0|L2|L3");
-  command->add_option("--time", args->time, "simulated time of each --rung L2|L3 point, e.g. 2s")
-      ->type_name("TIME");
+      .option("--rung", args->rung,
+              "L0 (default: the design check, in this process), L2 (each point a CEL-FEM "
+              "simulation) or L3 (DEM); simulated points are shared among the ranks of "
+              "mpirun -np N, each in its own folder, and read back when the sweep is run "
+              "again")
+      .type_name("L0|L2|L3");
+  command.option("--time", args->time, "simulated time of each --rung L2|L3 point, e.g. 2s")
+      .type_name("TIME");
   command
-      ->add_option("--verify", args->verify.mode,
-                   "verify each point as design --verify does (auto: where its decision is inside "
-                   "its band; cel; dem), in its own folder, shared among MPI ranks like --rung")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"off", "auto", "cel", "dem"}))
-      ->type_name("RUNG");
-  command->add_option("--budget", args->verify.budget, "wall time a point's verification may take")
-      ->capture_default_str()
-      ->type_name("TIME");
+      .option("--verify", args->verify.mode,
+              "verify each point as design --verify does (auto: where its decision is inside "
+              "its band; cel; dem), in its own folder, shared among MPI ranks like --rung")
+      .show_default()
+      .one_of({"off", "auto", "cel", "dem"})
+      .type_name("RUNG");
+  command.option("--budget", args->verify.budget, "wall time a point's verification may take")
+      .show_default()
+      .type_name("TIME");
   command
-      ->add_option("--tolerance", args->verify.tolerance,
-                   "error bar a point's verification must reach")
-      ->capture_default_str()
-      ->type_name("FRACTION");
+      .option("--tolerance", args->verify.tolerance, "error bar a point's verification must reach")
+      .show_default()
+      .type_name("FRACTION");
   command
-      ->add_option("--width-tolerance", args->verify.width_tolerance,
-                   "--verify dem: bracket of the bisection on the outlet width")
-      ->capture_default_str()
-      ->type_name("WIDTH");
-  command->add_option("--set", args->options.sets, "a case value every point takes (repeatable)")
-      ->type_name("KEY=VALUE")
-      ->take_all()
-      ->allow_extra_args(false);
-  command
-      ->add_option("--model", args->models,
-                   "select an alternative model (repeatable), as for design")
-      ->type_name("KEY=NAME")
-      ->take_all()
-      ->allow_extra_args(false);
-  command->add_flag("--report", args->report,
-                    "also write report.pdf and report.html: the table and the design charts");
-  command->add_option("--out", args->options.out, "output folder (default out/<case name>_sweep)")
-      ->type_name("DIR");
-  add_json_option(*command, args->options, "sweep.json");
-  add_verbosity_options(*command, args->options, true);
-  command->callback([args, &exit_code] { exit_code = run_sweep(*args); });
+      .option("--width-tolerance", args->verify.width_tolerance,
+              "--verify dem: bracket of the bisection on the outlet width")
+      .show_default()
+      .type_name("WIDTH");
+  command.option("--set", args->options.sets, "a case value every point takes (repeatable)")
+      .type_name("KEY=VALUE")
+      .repeatable();
+  command.option("--model", args->models, "select an alternative model (repeatable), as for design")
+      .type_name("KEY=NAME")
+      .repeatable();
+  command.flag("--report", args->report,
+               "also write report.pdf and report.html: the table and the design charts");
+  command.option("--out", args->options.out, "output folder (default out/<case name>_sweep)")
+      .type_name("DIR");
+  add_json_option(command, args->options, "sweep.json");
+  add_verbosity_options(command, args->options, true);
+  command.on_run([args, &exit_code] { exit_code = run_sweep(*args); });
 }
 
 }  // namespace feedflow

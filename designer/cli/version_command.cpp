@@ -7,9 +7,9 @@
 
 namespace feedflow {
 
-void add_version_command(CLI::App& app, int& exit_code) {
-  auto* command = app.add_subcommand("version", "print the feedflow version");
-  command->callback([&exit_code] {
+void add_version_command(Command& program, int& exit_code) {
+  auto command = program.subcommand("version", "print the feedflow version");
+  command.on_run([&exit_code] {
     std::cout << "feedflow " << kVersion << " (commit " << kCommit << ", built with g++ " << __VERSION__ << ", C++"
               << __cplusplus / 100 % 100 << ")\n";
     exit_code = 0;

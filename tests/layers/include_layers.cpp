@@ -75,18 +75,23 @@ bool is_source(const fs::path& path) {
   return ext == ".hpp" || ext == ".cpp" || ext == ".h" || ext == ".in";
 }
 
+// The source files of one layer folder, root-relative and sorted.
+std::vector<std::string> layer_sources(const fs::path& root, const std::string& layer) {
+  std::vector<std::string> files;
+  if (!fs::is_directory(root / layer)) return files;
+  for (const auto& entry : fs::recursive_directory_iterator(root / layer))
+    if (entry.is_regular_file() && is_source(entry.path()))
+      files.push_back(fs::relative(entry.path(), root).generic_string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
 }  // namespace
 
 LayerViolations include_violations(const fs::path& root) {
   LayerViolations violations;
   for (const auto& [layer, allowed] : kMayInclude) {
-    if (!fs::is_directory(root / layer)) continue;
-    std::vector<std::string> files;
-    for (const auto& entry : fs::recursive_directory_iterator(root / layer))
-      if (entry.is_regular_file() && is_source(entry.path()))
-        files.push_back(fs::relative(entry.path(), root).generic_string());
-    std::sort(files.begin(), files.end());
-    for (const std::string& file : files) {
+    for (const std::string& file : layer_sources(root, layer)) {
       for (const IncludeLine& include : includes_of(root, file)) {
         const std::string where =
             file + ":" + std::to_string(include.line) + " includes " + include.target + ": ";
@@ -148,6 +153,19 @@ std::vector<std::string> include_closure(const fs::path& root,
     }
   }
   return {seen.begin(), seen.end()};
+}
+
+std::vector<std::string> files_including(const fs::path& root, const std::string& target) {
+  std::vector<std::string> found;
+  for (const auto& entry : kMayInclude)
+    for (const std::string& file : layer_sources(root, entry.first)) {
+      const auto includes = includes_of(root, file);
+      if (std::any_of(includes.begin(), includes.end(),
+                      [&](const IncludeLine& include) { return include.target == target; }))
+        found.push_back(file);
+    }
+  std::sort(found.begin(), found.end());
+  return found;
 }
 
 }  // namespace feedflow::testing

@@ -27,4 +27,9 @@ LayerViolations link_violations(const std::filesystem::path& root);
 std::vector<std::string> include_closure(const std::filesystem::path& root,
                                          const std::vector<std::string>& start);
 
+// The source files of models/, fullsim/, reports/ and designer/ under `root` (root-relative,
+// sorted) that #include `target` (as written, e.g. "CLI/CLI.hpp").
+std::vector<std::string> files_including(const std::filesystem::path& root,
+                                         const std::string& target);
+
 }  // namespace feedflow::testing

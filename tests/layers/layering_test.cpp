@@ -1,6 +1,6 @@
 // The layers of DESIGN.md hold in the source tree: no include reaches up a layer, DEM and CEL
-// never include each other, each folder's CMakeLists links only the layers below it, and
-// writing the design command's files needs no solver.
+// never include each other, each folder's CMakeLists links only the layers below it, writing
+// the design command's files needs no solver, and one file compiles the command-line parser.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,6 +67,20 @@ TEST(Layers, WritingDesignFilesNeedsNoSolver) {
   std::copy_if(closure.begin(), closure.end(), std::back_inserter(solver),
                [](const std::string& f) { return f.starts_with("fullsim/"); });
   EXPECT_TRUE(solver.empty()) << listed(solver);
+}
+
+// The command-line parser (CLI11, header-only and slow to compile) is seen by one file,
+// designer/cli/command_line.cpp, behind designer/cli/command_line.hpp: the subcommand files
+// declare their options through that interface and are not each compiled with the parser.
+TEST(Layers, OneFileSeesTheCommandLineParser) {
+  const std::vector<std::string> expected = {"designer/cli/command_line.cpp"};
+  EXPECT_EQ(files_including(kRoot, "CLI/CLI.hpp"), expected);
+  // The search finds an include of the parser where it is (so the check above can fail).
+  const SyntheticTree tree("parser");
+  tree.write("designer/cli/x_command.cpp", "#include <CLI/CLI.hpp>\n");
+  tree.write("designer/cli/y_command.cpp", "#include \"designer/cli/command_line.hpp\"\n");
+  EXPECT_EQ(files_including(tree.root(), "CLI/CLI.hpp"),
+            std::vector<std::string>{"designer/cli/x_command.cpp"});
 }
 
 // The checker catches each kind of violation (so the real-tree tests above can fail): a model
