@@ -101,7 +101,10 @@ DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeOb
   DischargeRowFit f;
   f.row = &row;
   f.before = published_coefficients(row, g);
-  m.discharge_calibration = DischargeCalibration{g, {}, "the fit's trial"};
+  DischargeCalibration trial_coefficients;
+  trial_coefficients.geometry = g;
+  trial_coefficients.source = "the fit's trial";
+  m.discharge_calibration = std::move(trial_coefficients);
   for (const auto& o : obs) f.rate_before.push_back(*row_rate(row, f.before, o.hopper, m));
   std::vector<std::size_t> fitted;
   for (std::size_t i = 0; i < obs.size(); ++i)
@@ -154,7 +157,8 @@ DischargeFit fit_discharge(const std::vector<DischargeObservation>& obs, HopperM
   for (const DischargeModel& row : discharge_models().rows) {
     // A row that does not apply to the geometry (Brown-Richards on a cone) has nothing to fit.
     HopperMaterial trial = m;
-    trial.discharge_calibration = DischargeCalibration{g, {}, ""};
+    trial.discharge_calibration = DischargeCalibration{};
+    trial.discharge_calibration->geometry = g;
     if (!row_rate(row, published_coefficients(row, g), obs.front().hopper, trial)) continue;
     DischargeRowFit f = fit_row(row, obs, m, g);
     if (f.failure.empty()) out.calibration.coefficients.emplace(std::string(row.name), f.after);

@@ -8,14 +8,21 @@
 
 namespace feedflow {
 
-HopperModels hopper_models(const ModelChoices& choices) {
-  return {&choices.of(flow_factor_models()), &choices.of(critical_outlet_models()), &choices.of(discharge_models())};
+HopperModels hopper_models(const ModelChoices& choices, const HopperMaterial& material, const Hopper& h) {
+  HopperModels models{&choices.of(flow_factor_models()), &choices.of(critical_outlet_models()),
+                      &choices.of(discharge_models())};
+  const auto& calibration = material.discharge_calibration;
+  if (!choices.is_set(discharge_models().key) && calibration && calibration->geometry == flow_geometry(h) &&
+      !calibration->best_row.empty())
+    models.discharge = &discharge_models().at(calibration->best_row);
+  return models;
 }
 
 void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, DesignDetail detail,
                   DesignRecord& record) {
-  const HopperAssessment a =
-      assess_hopper(h, HopperMaterial::of(c.material, models.of(hopper_density_models())), hopper_models(models));
+  HopperMaterial material = HopperMaterial::of(c.material, models.of(hopper_density_models()));
+  const HopperModels chosen = hopper_models(models, material, h);
+  const HopperAssessment a = assess_hopper(h, std::move(material), chosen);
   HopperEstimates estimates = hopper_estimates(c.material, h, a);
   record.results = std::move(estimates.results);
   VerdictBuilder verdict;
@@ -25,10 +32,11 @@ void check_hopper(const Case& c, const Hopper& h, const ModelChoices& models, De
   record.verdict = verdict.verdict();
   if (detail == DesignDetail::results) return;
   record.charts = hopper_charts(c.material, h, a);
-  record.assumptions = hopper_assumptions(c, h, a);
+  record.assumptions = hopper_assumptions(c, h, a, !models.is_set(discharge_models().key));
 }
 
-std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a) {
+std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a,
+                                            bool rate_row_from_calibration) {
   const HopperEvaluation& nominal = a.nominal();
   std::vector<std::string> out;
   out.push_back("Critical outlet width: " + nominal.critical_model +
@@ -53,6 +61,18 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
                   c.material.calibration->rung + " over " + std::to_string(c.material.calibration->points) +
                   " design points, commit " + c.material.calibration->commit +
                   (figures.empty() ? "" : "; " + figures) + "; valid within the fitted outlet widths and semi-angles).");
+    const DischargeModel& default_row = discharge_models().default_row();
+    if (rate_row_from_calibration && nominal.rate_row != &default_row) {
+      const auto fallback = fitted.find(std::string(default_row.name));
+      const auto it = fallback == fitted.end() ? nullptr : &fallback->second.figures;
+      const std::string default_error =
+          it && it->count("held_out_max_error") ? ", held-out max error " + it->at("held_out_max_error") : "";
+      out.push_back("Discharge model: " + std::string(nominal.rate_row->name) +
+                    ", the calibrated row that met the full rung best (" +
+                    a.material.discharge_calibration->best_row_error + "), in place of the default " +
+                    std::string(default_row.name) + " (calibrated too" + default_error +
+                    "); --model hopper.discharge=NAME chooses another.");
+    }
   } else {
     out.push_back("Discharge: " + nominal.rate_model + "; expect +-20-30 % before calibration; Beverloo tends to "
                   "overpredict for elongated particles.");

@@ -11,14 +11,18 @@
 
 namespace feedflow {
 
-// The chosen rows of the hopper's model tables.
-HopperModels hopper_models(const ModelChoices& choices);
+// The chosen rows of the hopper's model tables. Where --model leaves hopper.discharge unset and
+// the material carries discharge coefficients calibrated for this hopper's geometry, the rate is
+// the calibrated row that met the full rung best (DischargeCalibration::best_row).
+HopperModels hopper_models(const ModelChoices& choices, const HopperMaterial& material, const Hopper& h);
 
 // Fills the record's results, verdict, charts and assumptions.
 void check_hopper(const Case& c, const Hopper& hopper, const ModelChoices& models,
                   DesignDetail detail, DesignRecord& record);
 
-// What the hopper models assume, and which way each number errs.
-std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a);
+// What the hopper models assume, and which way each number errs; `rate_row_from_calibration`:
+// the rate's row is the calibration's best, not one --model chose.
+std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, const HopperAssessment& a,
+                                            bool rate_row_from_calibration);
 
 }  // namespace feedflow

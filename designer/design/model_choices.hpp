@@ -19,6 +19,9 @@ class ModelChoices {
  public:
   // Parses "key=name" settings; throws InputError naming "--model" and the key.
   static ModelChoices parse(std::span<const std::string> settings);
+  // Whether --model set `key` (else its row is the default, or what the material's calibration
+  // prefers).
+  bool is_set(std::string_view key) const { return chosen_.find(key) != chosen_.end(); }
   // The chosen name for a key (the default when not set).
   std::string_view operator[](std::string_view key) const;
   // The chosen row of a table (its default when not set).

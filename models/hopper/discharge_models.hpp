@@ -68,6 +68,11 @@ struct DischargeCalibration {
   FlowGeometry geometry = FlowGeometry::plane;
   std::map<std::string, std::vector<double>, std::less<>> coefficients;
   std::string source;  // "calibrated against L2 CEL-FEM (pilot_hopper, 2026-12-02, 8c1f2e0)"
+  // The row that met the full rung best: the smallest max error on the points left out of the
+  // fit, or the smallest rms error of the fit when none were left out; empty when the
+  // calibration gives neither figure. `best_row_error` is that figure as written ("1.38 %").
+  std::string best_row;
+  std::string best_row_error;
 };
 
 // The coefficients a row evaluates with: calibrated ones where `calibration` has the row for
@@ -76,7 +81,8 @@ std::vector<double> coefficients_for(const DischargeModel& row, FlowGeometry g,
                                      const std::optional<DischargeCalibration>& calibration,
                                      bool* calibrated = nullptr);
 
-// johanson (default), beverloo, brown, rose_tanaka.
+// johanson (default; a material's calibration may name a better row, DischargeCalibration::
+// best_row), beverloo, brown, rose_tanaka.
 const ModelTable<DischargeModel>& discharge_models();
 
 }  // namespace feedflow

@@ -1,12 +1,44 @@
 #include "models/hopper/hopper_material.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string_view>
+#include <utility>
 #include <numbers>
 
 #include "models/core/errors.hpp"
 #include "models/units/angle.hpp"
 
 namespace feedflow {
+namespace {
+
+// "1.38 %" as 1.38; nothing for any other text.
+std::optional<double> percent_figure(const std::string& text) {
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end == text.c_str()) return std::nullopt;
+  while (*end == ' ') ++end;
+  if (std::string_view(end) != "%") return std::nullopt;
+  return x;
+}
+
+// The row with the smallest `figure` among the fitted rows; empty when no row has it.
+std::pair<std::string, std::string> best_by(const Calibration& c, const std::string& figure) {
+  std::pair<std::string, std::string> best;
+  double lowest = 0.0;
+  for (const auto& [row, fitted] : c.discharge) {
+    const auto it = fitted.figures.find(figure);
+    if (it == fitted.figures.end()) continue;
+    const auto x = percent_figure(it->second);
+    if (x && (best.first.empty() || *x < lowest)) {
+      lowest = *x;
+      best = {row, it->second};
+    }
+  }
+  return best;
+}
+
+}  // namespace
 
 HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& density) {
   if (!m.flow)
@@ -39,6 +71,15 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
         for (const auto& k : row.coefficients) values.push_back(fitted.coefficients.at(std::string(k.name)));
         dc.coefficients.emplace(row_name, std::move(values));
       }
+      auto best = best_by(c, "held_out_max_error");
+      if (!best.first.empty()) {
+        best.second = "held-out max error " + best.second;
+      } else {
+        best = best_by(c, "fit_rms_error");
+        if (!best.first.empty()) best.second = "fit rms error " + best.second;
+      }
+      dc.best_row = best.first;
+      dc.best_row_error = best.second;
       hm.discharge_calibration = std::move(dc);
     }
   }

@@ -2,13 +2,14 @@
 // calibration_reader): the [calibration] table written into a material file reads back with the
 // same coefficients, a second calibration replaces the first and keeps the rest of the file, a
 // broken table is refused naming its key, and the design check then uses the coefficients and
-// says so.
+// says so, with the calibrated row that met the full rung best unless --model picks one.
 #include <gtest/gtest.h>
 
 #include "designer/calibrate/calibration_toml.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_reader.hpp"
 #include "designer/design/design_check.hpp"
+#include "designer/design/model_choices.hpp"
 #include "models/core/errors.hpp"
 #include "models/material/builtin_materials.hpp"
 #include "models/units/angle.hpp"
@@ -131,6 +132,68 @@ TEST(CalibrationToml, DesignUsesTheCalibrationAndSaysSo) {
   const DesignRecord cone = design_check(c), cone_published = design_check(published);
   EXPECT_DOUBLE_EQ(std::get<double>(find_estimate(cone.results, "mass_flow_rate")->value),
                    std::get<double>(find_estimate(cone_published.results, "mass_flow_rate")->value));
+}
+
+// A calibration whose rows met the full rung differently on the held-out points (the shipped
+// pine's figures: Johanson 18.1 %, Brown 1.38 %, Rose-Tanaka 3.02 %).
+Calibration ranked() {
+  Calibration c = example(2.145);
+  c.discharge.erase("beverloo");
+  c.discharge["johanson"].figures = {{"fit_rms_error", "23.9 %"}, {"held_out_max_error", "18.1 %"}};
+  c.discharge["brown"].coefficients = {{"factor", 1.224}};
+  c.discharge["brown"].figures = {{"fit_rms_error", "8.04 %"}, {"held_out_max_error", "1.38 %"}};
+  c.discharge["rose_tanaka"].coefficients = {{"c", 1.035}, {"k", 1.92}};
+  c.discharge["rose_tanaka"].figures = {{"fit_rms_error", "9.39 %"}, {"held_out_max_error", "3.02 %"}};
+  return c;
+}
+
+const Estimate& rate_of(const DesignRecord& r) { return *find_estimate(r.results, "mass_flow_rate"); }
+
+bool says(const DesignRecord& r, const std::string& text) {
+  for (const auto& a : r.assumptions)
+    if (a.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// Left to choose, the check takes the calibrated row with the smallest held-out error (Brown, not
+// the default Johanson), gives the same rate as --model hopper.discharge=brown and says which row
+// it replaced; --model hopper.discharge=johanson still gets Johanson, and says nothing of a
+// replacement.
+TEST(CalibrationToml, DesignTakesTheCalibratedRowThatMetTheFullRungBest) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  c.material = read(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
+  const std::vector<std::string> brown{"hopper.discharge=brown"}, johanson{"hopper.discharge=johanson"};
+  const DesignRecord chosen = design_check(c);
+  const DesignRecord asked_brown = design_check(c, ModelChoices::parse(brown));
+  const DesignRecord asked_johanson = design_check(c, ModelChoices::parse(johanson));
+  EXPECT_DOUBLE_EQ(std::get<double>(rate_of(chosen).value), std::get<double>(rate_of(asked_brown).value));
+  EXPECT_NE(std::get<double>(rate_of(chosen).value), std::get<double>(rate_of(asked_johanson).value));
+  EXPECT_NE(rate_of(chosen).model.find("Brown"), std::string::npos) << rate_of(chosen).model;
+  EXPECT_TRUE(says(chosen, "in place of the default johanson (calibrated too, held-out max error 18.1 %)"));
+  EXPECT_TRUE(says(chosen, "held-out max error 1.38 %"));
+  EXPECT_FALSE(says(asked_johanson, "in place of the default"));
+  EXPECT_FALSE(says(asked_brown, "in place of the default"));
+}
+
+// Without held-out points the fit's rms error ranks the rows; a calibration that gives neither
+// figure leaves the default row.
+TEST(CalibrationToml, FitErrorRanksTheRowsWhenNothingWasHeldOut) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  Calibration fit_only = ranked();
+  for (auto& [name, row] : fit_only.discharge) row.figures.erase("held_out_max_error");
+  fit_only.discharge["rose_tanaka"].figures["fit_rms_error"] = "2 %";
+  c.material = read(with_calibration(pine_text(), calibration_toml(fit_only, {})));
+  const std::vector<std::string> rose{"hopper.discharge=rose_tanaka"};
+  EXPECT_DOUBLE_EQ(std::get<double>(rate_of(design_check(c)).value),
+                   std::get<double>(rate_of(design_check(c, ModelChoices::parse(rose))).value));
+  EXPECT_TRUE(says(design_check(c), "(fit rms error 2 %)"));
+
+  Calibration silent = ranked();
+  for (auto& [name, row] : silent.discharge) row.figures.clear();
+  c.material = read(with_calibration(pine_text(), calibration_toml(silent, {})));
+  const std::vector<std::string> johanson{"hopper.discharge=johanson"};
+  EXPECT_DOUBLE_EQ(std::get<double>(rate_of(design_check(c)).value),
+                   std::get<double>(rate_of(design_check(c, ModelChoices::parse(johanson))).value));
 }
 
 }  // namespace

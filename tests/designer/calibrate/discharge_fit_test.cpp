@@ -27,7 +27,9 @@ HopperMaterial pine() {
 // The rate [kg/s] the design check gives with `row` at coefficients `c`.
 double rate_with(const Hopper& h, const std::string& row, std::vector<double> c) {
   HopperMaterial m = pine();
-  m.discharge_calibration = DischargeCalibration{FlowGeometry::plane, {{row, std::move(c)}}, "test"};
+  m.discharge_calibration = DischargeCalibration{};
+  m.discharge_calibration->coefficients = {{row, std::move(c)}};
+  m.discharge_calibration->source = "test";
   HopperModels models;
   models.discharge = &discharge_models().at(row);
   return evaluate_hopper(h, h.semi_angle, h.outlet_width, m, material_variants(m, *h.wall_friction_angle).front(), models)
