@@ -135,6 +135,10 @@ class CelSolver {
   // The Courant number a blow-up message advises: half the one used, at most the default.
   double safer_courant() const;
   void guard(const CelStepReport& report) const;
+  // Stops a run whose step has collapsed (kStepCollapse of the largest step of the run below the
+  // cap): a cell crushed by an unstable mode, which would otherwise crawl on at a step that keeps
+  // shrinking.
+  void guard_step_collapse(const CelStepReport& report) const;
 
   CelGrid grid_;
   HypoplasticModel model_;
@@ -146,6 +150,7 @@ class CelSolver {
   double void_node_mass_ = 0.0;
   double time_ = 0.0;
   double dt_previous_ = 0.0;
+  double largest_dt_ = 0.0;  // of the steps below the cap in this process (not a checkpoint's run)
   long steps_ = 0;
   long cell_updates_ = 0;
   double removed_mass_ = 0.0;
