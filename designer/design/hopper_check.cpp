@@ -64,9 +64,10 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
     const DischargeModel& default_row = discharge_models().default_row();
     if (rate_row_from_calibration && nominal.rate_row != &default_row) {
       const auto fallback = fitted.find(std::string(default_row.name));
-      const auto it = fallback == fitted.end() ? nullptr : &fallback->second.figures;
-      const std::string default_error =
-          it && it->count("held_out_max_error") ? ", held-out max error " + it->at("held_out_max_error") : "";
+      const auto* default_figures = fallback == fitted.end() ? nullptr : &fallback->second.figures;
+      const std::string default_error = default_figures && default_figures->count("held_out_max_error")
+                                            ? ", held-out max error " + default_figures->at("held_out_max_error")
+                                            : "";
       out.push_back("Discharge model: " + std::string(nominal.rate_row->name) +
                     ", the calibrated row that met the full rung best (" +
                     a.material.discharge_calibration->best_row_error + "), in place of the default " +

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <numbers>
 #include <string_view>
 #include <utility>
-#include <numbers>
 
 #include "models/core/errors.hpp"
 #include "models/units/angle.hpp"
