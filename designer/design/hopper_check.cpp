@@ -57,10 +57,17 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
         if (row->second.figures.count(key))
           figures += std::string(figures.empty() ? "" : ", ") + (key == std::string("fit_rms_error") ? "rms error " : "held-out max error ") +
                      row->second.figures.at(key);
-    out.push_back("Discharge: " + nominal.rate_model + " (the material's [calibration]: coefficients fitted to " +
-                  c.material.calibration->rung + " over " + std::to_string(c.material.calibration->points) +
-                  " design points, commit " + c.material.calibration->commit +
-                  (figures.empty() ? "" : "; " + figures) + "; valid within the fitted outlet widths and semi-angles).");
+    const auto error =
+        calibrated_error(*nominal.rate_row, flow_geometry(h), a.material.discharge_calibration);
+    const std::string spanned_error =
+        error ? "; the rate's band spans the larger, +-" + format_number(*error * 100, 3) + " %"
+              : "";
+    out.push_back("Discharge: " + nominal.rate_model +
+                  " (the material's [calibration]: coefficients fitted to " +
+                  c.material.calibration->rung + " over " +
+                  std::to_string(c.material.calibration->points) + " design points, commit " +
+                  c.material.calibration->commit + (figures.empty() ? "" : "; " + figures) +
+                  "; valid within the fitted outlet widths and semi-angles)" + spanned_error + ".");
     const DischargeModel& default_row = discharge_models().default_row();
     if (rate_row_from_calibration && nominal.rate_row != &default_row) {
       const auto fallback = fitted.find(std::string(default_row.name));

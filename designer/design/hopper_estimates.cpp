@@ -113,6 +113,13 @@ HopperAssessment assess_hopper(const Hopper& h, HopperMaterial m, const HopperMo
     alternative.discharge = &row;
     a.rate.add(evaluate_hopper(h, h.semi_angle, h.outlet_width, a.material, variants.front(), alternative).rate);
   }
+  // A calibrated row errs against the full rung by its measured error: the band spans that too.
+  if (const auto error = calibrated_error(*models.discharge, g, a.material.discharge_calibration);
+      error && !a.rate.empty()) {
+    const Band spanned = a.rate;
+    a.rate.add(spanned.low * (1.0 - *error));
+    a.rate.add(spanned.high * (1.0 + *error));
+  }
   if (a.material.largest_size) a.mechanical = mechanical_arching_width(*a.material.largest_size);
   return a;
 }

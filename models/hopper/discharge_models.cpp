@@ -101,4 +101,14 @@ std::vector<double> coefficients_for(const DischargeModel& row, FlowGeometry g,
   return published_coefficients(row, g);
 }
 
+std::optional<double> calibrated_error(const DischargeModel& row, FlowGeometry g,
+                                       const std::optional<DischargeCalibration>& calibration) {
+  bool calibrated = false;
+  coefficients_for(row, g, calibration, &calibrated);
+  if (!calibrated) return std::nullopt;
+  const auto it = calibration->row_error.find(row.name);
+  if (it == calibration->row_error.end()) return std::nullopt;
+  return it->second;
+}
+
 }  // namespace feedflow

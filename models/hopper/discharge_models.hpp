@@ -73,6 +73,10 @@ struct DischargeCalibration {
   // calibration gives neither figure. `best_row_error` is that figure as written ("1.38 %").
   std::string best_row;
   std::string best_row_error;
+  // Each row's measured error against the full rung, as a fraction: the larger of its fit rms
+  // error and its held-out max error (rows without either figure are absent). A calibrated row's
+  // rate band spans it (assess_hopper).
+  std::map<std::string, double, std::less<>> row_error;
 };
 
 // The coefficients a row evaluates with: calibrated ones where `calibration` has the row for
@@ -80,6 +84,11 @@ struct DischargeCalibration {
 std::vector<double> coefficients_for(const DischargeModel& row, FlowGeometry g,
                                      const std::optional<DischargeCalibration>& calibration,
                                      bool* calibrated = nullptr);
+
+// The row's measured error against the full rung (DischargeCalibration::row_error) when it
+// evaluates with calibrated coefficients for this geometry; nothing otherwise.
+std::optional<double> calibrated_error(const DischargeModel& row, FlowGeometry g,
+                                       const std::optional<DischargeCalibration>& calibration);
 
 // johanson (default; a material's calibration may name a better row, DischargeCalibration::
 // best_row), beverloo, brown, rose_tanaka.

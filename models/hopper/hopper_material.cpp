@@ -70,6 +70,11 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
         std::vector<double> values;
         for (const auto& k : row.coefficients) values.push_back(fitted.coefficients.at(std::string(k.name)));
         dc.coefficients.emplace(row_name, std::move(values));
+        for (const char* figure : {"fit_rms_error", "held_out_max_error"}) {
+          const auto it = fitted.figures.find(figure);
+          const auto x = it == fitted.figures.end() ? std::nullopt : percent_figure(it->second);
+          if (x) dc.row_error[row_name] = std::max(dc.row_error[row_name], *x / 100.0);
+        }
       }
       auto best = best_by(c, "held_out_max_error");
       if (!best.first.empty()) {

@@ -175,6 +175,27 @@ TEST(CalibrationToml, DesignTakesTheCalibratedRowThatMetTheFullRungBest) {
   EXPECT_FALSE(says(asked_brown, "in place of the default"));
 }
 
+// A calibrated row's band spans its measured error against the full rung: Brown's 8.04 % fit rms
+// error (the larger of its two figures) widens each edge of the band the material's uncertainty
+// and the other rows give by 8.04 % (the shipped pine's held-out point at 60 mm fell outside the
+// unwidened band); without the figures the band is not widened.
+TEST(CalibrationToml, RateBandSpansTheCalibratedRowsMeasuredError) {
+  Case c = load_case("cases/pilot_hopper.toml");
+  c.material = read(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
+  const Estimate spanned = rate_of(design_check(c));
+  EXPECT_TRUE(says(design_check(c), "the rate's band spans the larger, +-8.04 %"));
+
+  Calibration silent = ranked();
+  for (auto& [name, row] : silent.discharge) row.figures.clear();
+  c.material = read(with_calibration(pine_text(), calibration_toml(silent, {})));
+  const std::vector<std::string> brown{"hopper.discharge=brown"};
+  const Estimate unwidened = rate_of(design_check(c, ModelChoices::parse(brown)));
+  EXPECT_DOUBLE_EQ(std::get<double>(unwidened.value), std::get<double>(spanned.value));
+  EXPECT_NEAR(*spanned.low, *unwidened.low * (1 - 0.0804), 1e-9 * *spanned.low);
+  EXPECT_NEAR(*spanned.high, *unwidened.high * (1 + 0.0804), 1e-9 * *spanned.high);
+  EXPECT_FALSE(says(design_check(c, ModelChoices::parse(brown)), "the rate's band spans"));
+}
+
 // Without held-out points the fit's rms error ranks the rows; a calibration that gives neither
 // figure leaves the default row.
 TEST(CalibrationToml, FitErrorRanksTheRowsWhenNothingWasHeldOut) {
