@@ -173,7 +173,8 @@ double CelSolver::safer_courant() const {
 void CelSolver::guard_step_collapse(const CelStepReport& report) const {
   // A hundredfold smaller step needs a 10^4 times stiffer cell (c_d grows about as sqrt(p)): no
   // gravity-driven bin, chute or drum loads its bulk so; measured, the settled runs take 1/5-1/10
-  // of their first step and the crushed corner cell of a nearly frictionless wedge 1/1700.
+  // of their first step, and the outlet-lip cell of a nearly frictionless wedge, crushed when the
+  // walls were projected one after another at a corner, 1/1700.
   constexpr double kStepCollapse = 1e-2;
   if (active_.empty() || !(report.dt < kStepCollapse * largest_dt_)) return;
   const std::size_t c = report.time_step.limiting_cell;

@@ -1,5 +1,6 @@
 #include "fullsim/cel/wall_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -42,6 +43,84 @@ bool corner_of_wall_cell(const CelGrid& grid, const CellFields& cells, std::size
   return false;
 }
 
+// A wall a node touches: its index, unit normal (into the material) and velocity at the node.
+struct Touch {
+  std::size_t index;
+  const RigidWall* wall;
+  NodeVector n;
+  NodeVector vw;
+};
+
+// Whether v moves into none of the touched walls (to round-off).
+bool admissible(const NodeVector& v, const std::vector<Touch>& touches) {
+  for (const auto& t : touches) {
+    const NodeVector rel = v - t.vw;
+    if (rel.dot(t.n) < -1e-12 * (v.norm() + t.vw.norm())) return false;
+  }
+  return true;
+}
+
+// A node's velocity after the contact, and the impulse per unit mass each touched wall gave.
+struct ContactOutcome {
+  NodeVector velocity;
+  std::vector<NodeVector> impulse;
+};
+
+// The velocity a node moving at v takes against the walls it touches. Its frictionless part is the
+// nearest velocity that moves into none of them (a convex projection: the nearest of the
+// candidates with one or two active walls, two independent normals fixing a velocity in 2D, whose
+// impulses push); Coulomb friction then acts when one wall is active. Projecting on the walls one
+// after another instead turns a node pressed into a corner (a wedge's outlet lip on its closed
+// gate) into one sliding along the second wall: at low wall friction the lip slid on the gate,
+// emptied its cell and crushed what was left.
+ContactOutcome meet_walls(const NodeVector& v, const std::vector<Touch>& touches) {
+  ContactOutcome out{v, std::vector<NodeVector>(touches.size(), NodeVector::Zero())};
+  if (admissible(v, touches)) return out;
+  double nearest = std::numeric_limits<double>::infinity();
+  const std::size_t none = touches.size();
+  std::size_t single = none;  // the one active wall of the nearest candidate, if one
+  for (std::size_t k = 0; k < touches.size(); ++k) {
+    const double vn = (v - touches[k].vw).dot(touches[k].n);
+    if (vn < 0.0 && -vn < nearest && admissible(v - vn * touches[k].n, touches)) {
+      nearest = -vn;
+      single = k;
+    }
+  }
+  for (std::size_t k = 0; k < touches.size(); ++k)
+    for (std::size_t l = k + 1; l < touches.size(); ++l) {
+      // Cramer's rule, so that a corner of resting walls stops the node exactly.
+      const NodeVector &nk = touches[k].n, &nl = touches[l].n;
+      const double det = nk.x() * nl.y() - nk.y() * nl.x();
+      if (std::abs(det) < 1e-6) continue;  // (anti)parallel walls
+      const double tk = touches[k].vw.dot(nk), tl = touches[l].vw.dot(nl);
+      const NodeVector stuck((tk * nl.y() - nk.y() * tl) / det, (nk.x() * tl - tk * nl.x()) / det);
+      const NodeVector d = stuck - v;
+      const double lk = (d.x() * nl.y() - nl.x() * d.y()) / det,
+                   ll = (nk.x() * d.y() - d.x() * nk.y()) / det;
+      if (lk < 0.0 || ll < 0.0 || d.norm() >= nearest || !admissible(stuck, touches)) continue;
+      nearest = d.norm();
+      single = none;
+      std::fill(out.impulse.begin(), out.impulse.end(), NodeVector::Zero());
+      out.impulse[k] = lk * nk;
+      out.impulse[l] = ll * nl;
+      out.velocity = stuck;
+    }
+  if (single != none) {
+    const Touch& t = touches[single];
+    out.velocity = t.vw + project(v - t.vw, t.n, *t.wall);
+    out.impulse[single] = out.velocity - v;
+    return out;
+  }
+  if (std::isfinite(nearest)) return out;
+  // No consistent active set (walls squeezing the node from opposite sides): one after another.
+  for (std::size_t k = 0; k < touches.size(); ++k) {
+    const NodeVector before = out.velocity;
+    out.velocity = touches[k].vw + project(before - touches[k].vw, touches[k].n, *touches[k].wall);
+    out.impulse[k] = out.velocity - before;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
@@ -54,6 +133,7 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
   const double d_c = options.contact_distance * grid.cell_size;
   std::vector<double> distance(walls.size());
   std::vector<NodeVector> normal(walls.size());
+  std::vector<Touch> touches;
   for (std::size_t a = 0; a < grid.node_count(); ++a) {
     if (nodes.mass[a] <= void_node_mass) continue;
     const Eigen::Vector2d x = grid.node_position(a);
@@ -63,14 +143,15 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
       if (distance[k] < distance[nearest]) nearest = k;
     }
     const bool held = corner_of_wall_cell(grid, cells, a);
-    for (std::size_t k = 0; k < walls.size(); ++k) {
-      if (distance[k] >= d_c && !(held && k == nearest)) continue;
-      const NodeVector& n = normal[k];
-      const NodeVector vw = walls[k].velocity_at(x);
-      const NodeVector before = nodes.velocity[a];
-      nodes.velocity[a] = vw + project(before - vw, n, walls[k].wall());
-      reaction[k] += nodes.mass[a] * (nodes.velocity[a] - before) / dt;
-    }
+    touches.clear();
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      if (distance[k] < d_c || (held && k == nearest))
+        touches.push_back({k, &walls[k].wall(), normal[k], walls[k].velocity_at(x)});
+    if (touches.empty()) continue;
+    const ContactOutcome met = meet_walls(nodes.velocity[a], touches);
+    nodes.velocity[a] = met.velocity;
+    for (std::size_t t = 0; t < touches.size(); ++t)
+      reaction[touches[t].index] += nodes.mass[a] * met.impulse[t] / dt;
   }
   return reaction;
 }

@@ -4,7 +4,9 @@
 // wall than the contact distance d_c loses the velocity component into the wall (relative to the
 // wall's own velocity); the tangential component sticks if |v_t| <= mu |v_n| and is otherwise
 // reduced by mu |v_n| (no slip: always sticks). The wall reaction m (v* - v) / dt is booked per
-// wall. No penalty parameter, no time-step restriction.
+// wall. A node touching two walls (a corner) takes the nearest velocity that moves into neither,
+// then friction on the one wall it slides along, if any. No penalty parameter, no time-step
+// restriction.
 //
 // The grid sees an inclined wall as a staircase of solid cells: empty cells whose centre lies
 // inside the walls (or all four of whose corners do) take no material and no transport, so a

@@ -35,22 +35,15 @@ double result_value(const nlohmann::json& j, const std::string& name) {
   return j.at("results").at(name).at("value").get<double>();
 }
 
-// A nearly frictionless wedge (phi_w 2.5 deg) at the default Courant number 0.8 crushes the cell
-// beside its outlet lip during the fill's settling (void ratio towards 0, MPa, the step a
-// hundredfold down): the run stops in seconds with exit 4, naming the cell, the time and the
-// setting that runs it (time_step_safety = 0.4), and writes no results; with that setting the
-// same run completes with its mass conserved.
-TEST_F(SimulateCel, CollapsingStepStopsTheRunAndNamesASafeCourantNumber) {
-  const std::string smooth = kHopper + "--time 0.05s --set hopper.wall_friction_angle=2.5deg ";
-  const auto crushed = run_feedflow(smooth + "--out crushed", dir_);
-  EXPECT_EQ(crushed.exit_code, 4) << crushed.err;
-  EXPECT_NE(crushed.err.find("CEL time step collapsed at step"), std::string::npos) << crushed.err;
-  EXPECT_NE(crushed.err.find(", cell (2, 0)"), std::string::npos) << crushed.err;
-  EXPECT_NE(crushed.err.find("rerun with [cel] time_step_safety = 0.4"), std::string::npos) << crushed.err;
-  EXPECT_FALSE(fs::exists(dir_ / "crushed/results.json"));
-  const auto safe = run_feedflow(smooth + "--set cel.time_step_safety=0.4 --out safe", dir_);
-  ASSERT_EQ(safe.exit_code, 0) << safe.err;
-  const auto j = nlohmann::json::parse(slurp(dir_ / "safe/results.json"));
+// A nearly frictionless wedge (phi_w 2.5 deg) settles and discharges at the default Courant
+// number 0.8 with its mass conserved. Before the corner contact its outlet lip slid on the closed
+// gate, the cell beside it was crushed (void ratio towards 0, MPa) and the step-collapse guard
+// stopped the run with exit 4 at t = 1.75 s of the settling.
+TEST_F(SimulateCel, SmoothWedgeRunsAtTheDefaultCourantNumber) {
+  const auto smooth = run_feedflow(
+      kHopper + "--time 0.05s --set hopper.wall_friction_angle=2.5deg --out smooth", dir_);
+  ASSERT_EQ(smooth.exit_code, 0) << smooth.err;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "smooth/results.json"));
   EXPECT_LT(std::abs(result_value(j, "mass_balance_error")), 1e-12);
 }
 

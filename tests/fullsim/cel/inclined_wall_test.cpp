@@ -238,5 +238,58 @@ TEST(CelRigidWall, CornersOfWallCellsAreHeldByTheirNearestWall) {
   EXPECT_GT(reaction.at(0).dot(n), 0.0);  // the wall pushes the material out
 }
 
+// The velocity a node takes against the given walls (in this order), with the walls' reactions.
+struct Contacted {
+  NodeVector velocity;
+  std::vector<NodeVector> reaction;
+};
+Contacted contact_of(const std::vector<RigidWall>& rigid, const NodeVector& position,
+                     const NodeVector& v) {
+  const CelGrid g = make_plane_strain_grid(4, 4, kCell);
+  std::vector<PlacedWall> walls;
+  for (const auto& w : rigid) walls.emplace_back(w, 0.0);
+  CellFields cells;
+  cells.resize(g.cell_count());
+  NodeFields nodes;
+  nodes.resize(g.node_count());
+  const std::size_t a = g.node(static_cast<int>(std::lround(position.x() / kCell)),
+                               static_cast<int>(std::lround(position.y() / kCell)));
+  nodes.mass[a] = 1.0;
+  nodes.velocity[a] = v;
+  const auto reaction = apply_wall_contact(g, walls, WallContactOptions{}, 1.0, 0.0, cells, nodes);
+  return {nodes.velocity[a], reaction};
+}
+
+// A node pressed into a corner takes the nearest velocity that moves into neither wall, whichever
+// wall comes first. A wedge's outlet lip (a 30 deg wall meeting the closed gate) falling down and
+// outward stops, both walls pushing; projected on the sloped wall and then the gate it slid toward
+// the axis at a third of its speed (the low-friction step collapse). At an obtuse junction (a
+// bin's vertical wall meeting the 30 deg wall) a node moving down and out slides along the
+// sloped wall at exactly its frictionless projection, (-0.183, -0.317) m/s for (1, -1) m/s.
+TEST(CelRigidWall, NodeInACornerTakesTheNearestVelocityMovingIntoNeitherWall) {
+  const double mu = std::tan(2.5 * std::numbers::pi / 180.0);
+  const NodeVector sloped_normal(-std::cos(std::numbers::pi / 6), std::sin(std::numbers::pi / 6));
+  const RigidWall sloped = make_half_plane_wall({0.02, 0.0}, sloped_normal, mu);
+  const RigidWall gate = make_half_plane_wall({0.0, 0.0}, {0.0, 1.0}, mu);
+  const NodeVector falling(0.3, -1.0), lip(0.02, 0.0);  // down and out, into both
+  for (const bool gate_first : {false, true}) {
+    const Contacted c = contact_of(
+        gate_first ? std::vector{gate, sloped} : std::vector{sloped, gate}, lip, falling);
+    EXPECT_NEAR(c.velocity.norm(), 0.0, 1e-15);
+    EXPECT_NEAR((c.reaction[0] + c.reaction[1] + falling).norm(), 0.0, 1e-15);  // m (v* - v) / dt
+    EXPECT_GT(c.reaction[gate_first ? 0 : 1].y(), 0.0);                         // both walls push
+    EXPECT_GT(c.reaction[gate_first ? 1 : 0].dot(sloped_normal), 0.0);
+  }
+
+  const RigidWall bin = make_half_plane_wall({0.02, 0.0}, {-1.0, 0.0});
+  const RigidWall smooth = make_half_plane_wall({0.02, 0.0}, sloped_normal);
+  for (const bool bin_first : {false, true}) {
+    const Contacted c = contact_of(bin_first ? std::vector{bin, smooth} : std::vector{smooth, bin},
+                                   lip, {1.0, -1.0});
+    EXPECT_NEAR(c.velocity.x(), -0.25 * (std::sqrt(3.0) - 1.0), 1e-12);
+    EXPECT_NEAR(c.velocity.y(), -0.25 * (3.0 - std::sqrt(3.0)), 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace feedflow::cel

@@ -163,5 +163,32 @@ TEST(CelSettledColumn, StateWithoutAWaveSpeedStopsTheRun) {
   }
 }
 
+// The step-collapse guard stops a run whose step falls below a hundredth of its largest, naming
+// the cell, its state and a safer Courant number: one cell of a settling column set to the state
+// the wedge's outlet lip was crushed to before the corner contact (void ratio 0.003, pressure
+// 23 MPa; its step fell 1700-fold).
+TEST(CelSettledColumn, CollapsingStepStopsTheRunAndNamesASafeCourantNumber) {
+  CelSolver s(make_plane_strain_grid(4, 6, kCell), make_hypoplastic_model(loblolly_pine_table1()),
+              SettledColumn::options());
+  s.add_material({{0.0, 0.0}, {0.08, 0.08}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
+  while (s.time() < 0.2) s.step();
+  const double settling_step = s.last_dt();
+  CelSolverState state = s.state();
+  const std::size_t crushed = s.grid().cell(2, 0);
+  state.cells.void_ratio[crushed] = 0.003;
+  state.cells.stress[crushed] = -23e6 * Eigen::Matrix3d::Identity();
+  s.restore(state);
+  try {
+    s.step();
+    FAIL() << "no collapse reported; step " << s.last_dt() << " s after " << settling_step << " s";
+  } catch (const NumericalFailure& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("CEL time step collapsed at step"), std::string::npos) << m;
+    EXPECT_NE(m.find(", cell (2, 0)"), std::string::npos) << m;
+    EXPECT_NE(m.find("void ratio 0.003"), std::string::npos) << m;
+    EXPECT_NE(m.find("rerun with [cel] time_step_safety = 0.4"), std::string::npos) << m;
+  }
+}
+
 }  // namespace
 }  // namespace feedflow::cel
