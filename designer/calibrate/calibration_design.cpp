@@ -13,8 +13,14 @@ MeasuredOrder measured_hopper_rate_order() { return measured_hopper_rate_order(m
 
 MeasuredOrder measured_hopper_rate_order(const MeasuredBench& table) {
   const MeasuredQuestion* q = table.find("hopper_discharge_rate_60mm");
-  if (!q || !q->order)
-    throw NotAvailable("the bench table has no observed order for the hopper's discharge rate; give --order");
+  if (!q || !q->reference)
+    throw NotAvailable(
+        "the bench table has no reference for the hopper's discharge rate; give --order");
+  if (!q->order)
+    return {kDonorCellFormalOrder,
+            "(the donor-cell remap's formal order; feedflow bench observed no order on the "
+            "pilot hopper at W = 60 mm, " +
+                table.date + ")"};
   // An order above the scheme's is not carried to other geometries: the pilot hopper's three
   // levels may converge faster than a two-level estimate elsewhere can assume.
   if (*q->order > kDonorCellFormalOrder)

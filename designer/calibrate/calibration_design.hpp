@@ -22,7 +22,8 @@ struct DesignPoint {
 // The order the hopper's CEL discharge rate converges with, as `feedflow bench` measured it
 // (the shipped table's pilot hopper question: 10, 5, 2.5 mm at W = 60 mm), and where it was
 // measured: what two levels extrapolate with unless told otherwise; at most the donor-cell
-// remap's formal order 1. Throws NotAvailable when the table has no observed order for it.
+// remap's formal order 1, which is also taken when the levels showed no order. Throws
+// NotAvailable when the table has no reference for it.
 struct MeasuredOrder {
   double order;
   std::string source;

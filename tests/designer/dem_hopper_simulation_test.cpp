@@ -48,7 +48,7 @@ const char* kTwin = "tests/data/dem_hopper_twin.toml";
 // first-in-first-out (the 30 deg, 8.5 deg-wall wedge is mass flow in the reduced model). Its q_m
 // (scaled from the slab to the slot length) lies below the reduced rate, which is calibrated
 // against the continuum rung, by the particle rung's known shortfalls: on the pilot the DEM
-// (Hertz, 1.5 mm) gives 0.73 of the CEL reference (4.20 against 5.76 kg/s, RECORD.md), and the
+// (Hertz, 1.5 mm) gives 0.75 of the CEL reference (4.20 against 5.58 kg/s, RECORD.md), and the
 // twin's coarse grains (W/d = 10) cost Beverloo's (1 - 1.5 d / W)^1.5 = 0.79 against the reduced
 // model's fine grain: 0.57 expected, 0.53 measured (3.24 against 6.10 kg/s on 2026-12-05).
 TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
