@@ -139,31 +139,49 @@ class CelHopperAdapter final : public CelSceneAdapter {
     }
     const std::string& label = model_label();
     record.assumptions = {
-        cone() ? std::string("Axisymmetric (r, z) about the cone's axis: hoop strain rate and stress in the element, "
-                             "r-weighted volumes in the remap, the circular outlet on the axis; the rate per radian "
-                             "is multiplied by 2 pi. Swirl and flow off the axis' symmetry (asymmetric arches, "
-                             "rat-holes) are not represented. The flow pattern on this grid does not converge: the pilot "
-                             "cone's (8.5 deg walls) wall zone slows as the cells shrink: wall/centre speed at 20 deg "
-                             "0.69, 0.71, 0.38, at 30 deg 0.39, 0.23, 0.079 (mass flow turning to funnel flow) and at "
-                             "40 deg 0.14, 0.019, 0.007 at 10, 5 and 2.5 mm cells; funnel flow from 45 deg at every size. At 30 deg on "
-                             "1.25 mm cells the cone is in funnel flow (wall/centre 0.019, a 46 mm stagnant band): the "
-                             "band at the wall holds a ring arch, its hoop stress several times its in-plane stresses. "
-                             "The band forms without wall friction too (0.1 deg: wall share 0.90, 0.21 at 10, 5 mm): "
-                             "the grid's staircase wall holds it, so it is an artefact of the wall, not the law's "
-                             "answer. Arnold-McLean puts the limit "
-                             "at 39.6 deg and the DEM near 47 deg: read the CEL's flow pattern on a cone as a "
-                             "pessimistic indication, not an answer (design --verify does not use it). A funnel-flow "
-                             "channel follows the grid's columns and runs fast on coarse cells (45 deg: 0.62 kg/s at "
-                             "10 mm, 0.45 kg/s at 5 mm).")
-        : std::string(section_ == cel::HopperSection::full
-                        ? "Plane strain full-width section, both walls ([cel] hopper_section = "
-                          "full): the rate per metre is "
-                        : "Plane strain half slice with a symmetry plane, as the seed's FEM ([cel] "
-                          "hopper_section = half): the half slice's rate per metre is doubled and ") +
-            "multiplied by the slot length " + format_quantity(slot_, "m", 3) +
-            (hopper_.slot_length ? "" : " (assumed 1 m: the case gives no slot length)") +
-            "; end walls of the slot are not modelled (errs high for short slots).",
-        "Initial void ratio 0.7102 (seed deck) at the case's bulk density; initial stress -10 Pa I.",
+        cone()
+            ? std::string(
+                  "Axisymmetric (r, z) about the cone's axis: hoop strain rate and stress in the "
+                  "element, "
+                  "r-weighted volumes in the remap, the circular outlet on the axis; the rate per "
+                  "radian "
+                  "is multiplied by 2 pi. Swirl and flow off the axis' symmetry (asymmetric "
+                  "arches, "
+                  "rat-holes) are not represented. The flow pattern on this grid does not "
+                  "converge: the pilot "
+                  "cone's (8.5 deg walls) wall zone slows as the cells shrink: wall/centre speed "
+                  "at 20 deg "
+                  "0.69, 0.71, 0.38, at 30 deg 0.39, 0.23, 0.079 (mass flow turning to funnel "
+                  "flow) and at "
+                  "40 deg 0.14, 0.019, 0.007 at 10, 5 and 2.5 mm cells; funnel flow from 45 deg at "
+                  "every size. At 30 deg on "
+                  "1.25 mm cells the cone is in funnel flow (wall/centre 0.019, a 46 mm stagnant "
+                  "band): the "
+                  "band at the wall holds a ring arch, its hoop stress several times its in-plane "
+                  "stresses. "
+                  "Without wall friction the band fades on refinement (0.1 deg: wall share 0.35, "
+                  "0.69 at "
+                  "10, 5 mm), with the pine's 8.5 deg it stays (0.26, 0.21): the wall's friction "
+                  "holds the "
+                  "ring; whether as the law's answer or through the grid's staircase wall is open. "
+                  "Arnold-McLean puts the limit "
+                  "at 39.6 deg and the DEM near 47 deg: read the CEL's flow pattern on a cone as a "
+                  "pessimistic indication, not an answer (design --verify does not use it). A "
+                  "funnel-flow "
+                  "channel follows the grid's columns and runs fast on coarse cells (45 deg: 0.62 "
+                  "kg/s at "
+                  "10 mm, 0.45 kg/s at 5 mm).")
+            : std::string(
+                  section_ == cel::HopperSection::full
+                      ? "Plane strain full-width section, both walls ([cel] hopper_section = "
+                        "full): the rate per metre is "
+                      : "Plane strain half slice with a symmetry plane, as the seed's FEM ([cel] "
+                        "hopper_section = half): the half slice's rate per metre is doubled and ") +
+                  "multiplied by the slot length " + format_quantity(slot_, "m", 3) +
+                  (hopper_.slot_length ? "" : " (assumed 1 m: the case gives no slot length)") +
+                  "; end walls of the slot are not modelled (errs high for short slots).",
+        "Initial void ratio 0.7102 (seed deck) at the case's bulk density; initial stress -10 Pa "
+        "I.",
         "Remap: " + label.substr(label.find(", ") + 2, label.size() - label.find(", ") - 3) +
             " ([cel] remap_order, material_flux; the donor cell smears the free surface and the "
             "outlet jet); q_m from the exact outflow ledger. Cut cells fill whole: up to half a "
@@ -171,18 +189,27 @@ class CelHopperAdapter final : public CelSceneAdapter {
             "their void ratio and pass the excess on (not compacted). That excess is mass without "
             "pressure moving along the wall (overfilled_mass_share): about 14 % of the grid's mass "
             "by the end in the pilot cone (mass flow along a 20 deg wall), 2 % in the pilot wedge.",
-        cone() ? "q_m depends on the cell size; the axisymmetric cone is not on the bench: the pilot cone gives "
-                 "0.483 kg/s at 10 mm cells (3 across the orifice's radius) against 0.505 kg/s at 5 mm."
-               : "q_m depends on the cell size: pilot hopper 5.29 kg/s at 10 mm cells (outlet 3 cells "
-                 "across the half slot) against 5.49 kg/s at 5 mm (1 s after the opening); at 20 mm (1.5 "
-                 "cells) it arches.",
-        "Gravity phase with dynamic relaxation (damping switched off at the opening); not physical, "
+        cone()
+            ? "q_m depends on the cell size; the axisymmetric cone is not on the bench: the pilot "
+              "cone gives "
+              "0.483 kg/s at 10 mm cells (3 across the orifice's radius) against 0.505 kg/s at 5 "
+              "mm."
+            : "q_m depends on the cell size: pilot hopper 5.29 kg/s at 10 mm cells (outlet 3 cells "
+              "across the half slot) against 5.49 kg/s at 5 mm (1 s after the opening); at 20 mm "
+              "(1.5 "
+              "cells) it arches.",
+        "Gravity phase with dynamic relaxation (damping switched off at the opening); not "
+        "physical, "
         "it only brings the fill to rest faster.",
-        "Measured as on every rung: q_m over the steady window of 50 ms batches (MSER, 95 % batch-means "
-        "interval); \"arched\" when less than 2 % of rho_b W sqrt(g W) leaves for 0.5 s and the bed is "
+        "Measured as on every rung: q_m over the steady window of 50 ms batches (MSER, 95 % "
+        "batch-means "
+        "interval); \"arched\" when less than 2 % of rho_b W sqrt(g W) leaves for 0.5 s and the "
+        "bed is "
         "still; flow pattern: mass flow when the wall-side node moves at more than 10 % of the "
-        "centreline speed at mid-height of the converging section, averaged over the steady window.",
-        "No cohesion in the hypoplastic law: a continuum arch is frictional only (errs toward flow)."};
+        "centreline speed at mid-height of the converging section, averaged over the steady "
+        "window.",
+        "No cohesion in the hypoplastic law: a continuum arch is frictional only (errs toward "
+        "flow)."};
   }
 
  private:

@@ -60,22 +60,19 @@ bool admissible(const NodeVector& v, const std::vector<Touch>& touches) {
   return true;
 }
 
-// A node's velocity after the contact, and the impulse per unit mass each touched wall gave.
-struct ContactOutcome {
-  NodeVector velocity;
-  std::vector<NodeVector> impulse;
-};
-
-// The velocity a node moving at v takes against the walls it touches. Its frictionless part is the
+// The velocity a node moving at v takes against the walls it touches, and in `impulse` what each
+// gave per unit mass. Its frictionless part is the
 // nearest velocity that moves into none of them (a convex projection: the nearest of the
 // candidates with one or two active walls, two independent normals fixing a velocity in 2D, whose
 // impulses push); Coulomb friction then acts when one wall is active. Projecting on the walls one
 // after another instead turns a node pressed into a corner (a wedge's outlet lip on its closed
 // gate) into one sliding along the second wall: at low wall friction the lip slid on the gate,
 // emptied its cell and crushed what was left.
-ContactOutcome meet_walls(const NodeVector& v, const std::vector<Touch>& touches) {
-  ContactOutcome out{v, std::vector<NodeVector>(touches.size(), NodeVector::Zero())};
-  if (admissible(v, touches)) return out;
+NodeVector meet_walls(const NodeVector& v, const std::vector<Touch>& touches,
+                      std::vector<NodeVector>& impulse) {
+  impulse.assign(touches.size(), NodeVector::Zero());
+  if (admissible(v, touches)) return v;
+  NodeVector velocity = v;
   double nearest = std::numeric_limits<double>::infinity();
   const std::size_t none = touches.size();
   std::size_t single = none;  // the one active wall of the nearest candidate, if one
@@ -100,25 +97,25 @@ ContactOutcome meet_walls(const NodeVector& v, const std::vector<Touch>& touches
       if (lk < 0.0 || ll < 0.0 || d.norm() >= nearest || !admissible(stuck, touches)) continue;
       nearest = d.norm();
       single = none;
-      std::fill(out.impulse.begin(), out.impulse.end(), NodeVector::Zero());
-      out.impulse[k] = lk * nk;
-      out.impulse[l] = ll * nl;
-      out.velocity = stuck;
+      std::fill(impulse.begin(), impulse.end(), NodeVector::Zero());
+      impulse[k] = lk * nk;
+      impulse[l] = ll * nl;
+      velocity = stuck;
     }
   if (single != none) {
     const Touch& t = touches[single];
-    out.velocity = t.vw + project(v - t.vw, t.n, *t.wall);
-    out.impulse[single] = out.velocity - v;
-    return out;
+    velocity = t.vw + project(v - t.vw, t.n, *t.wall);
+    impulse[single] = velocity - v;
+    return velocity;
   }
-  if (std::isfinite(nearest)) return out;
+  if (std::isfinite(nearest)) return velocity;
   // No consistent active set (walls squeezing the node from opposite sides): one after another.
   for (std::size_t k = 0; k < touches.size(); ++k) {
-    const NodeVector before = out.velocity;
-    out.velocity = touches[k].vw + project(before - touches[k].vw, touches[k].n, *touches[k].wall);
-    out.impulse[k] = out.velocity - before;
+    const NodeVector before = velocity;
+    velocity = touches[k].vw + project(before - touches[k].vw, touches[k].n, *touches[k].wall);
+    impulse[k] = velocity - before;
   }
-  return out;
+  return velocity;
 }
 
 }  // namespace
@@ -134,6 +131,7 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
   std::vector<double> distance(walls.size());
   std::vector<NodeVector> normal(walls.size());
   std::vector<Touch> touches;
+  std::vector<NodeVector> impulse;
   for (std::size_t a = 0; a < grid.node_count(); ++a) {
     if (nodes.mass[a] <= void_node_mass) continue;
     const Eigen::Vector2d x = grid.node_position(a);
@@ -148,10 +146,9 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
       if (distance[k] < d_c || (held && k == nearest))
         touches.push_back({k, &walls[k].wall(), normal[k], walls[k].velocity_at(x)});
     if (touches.empty()) continue;
-    const ContactOutcome met = meet_walls(nodes.velocity[a], touches);
-    nodes.velocity[a] = met.velocity;
+    nodes.velocity[a] = meet_walls(nodes.velocity[a], touches, impulse);
     for (std::size_t t = 0; t < touches.size(); ++t)
-      reaction[touches[t].index] += nodes.mass[a] * met.impulse[t] / dt;
+      reaction[touches[t].index] += nodes.mass[a] * impulse[t] / dt;
   }
   return reaction;
 }
