@@ -29,7 +29,7 @@ TEST(MeasuredBench, ShipsThePilotHoppersMeasuredReference) {
 }
 
 // Within 10 % and within 5 % the cheapest measured answer is a reduced row calibrated against
-// the CEL rung (Rose-Tanaka, +6.3 %, and Brown, +4.6 %, milliseconds; Beverloo is 17 % off), not a
+// the CEL rung (Rose-Tanaka, +6.6 %, and Brown, +4.4 %, milliseconds; Beverloo is 18 % off), not a
 // CEL run (the 10 mm run is 4.6 % off and its second-order remap 0.5 %, but they take seconds);
 // the flow-pattern label is answered right by the reduced rung; the drum at 10 rpm converged
 // (45.9 +- 0.17 deg, order 2.3), and within 10 % its 10 mm CEL run answers (7.7 %, seconds), not
