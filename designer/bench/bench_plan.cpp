@@ -79,6 +79,7 @@ void add_cel_points(BenchQuestion& q, const std::string& quantity, std::optional
       p.sets = {"cel.cell_size=10mm", std::string("cel.remap_order=") + remap,
                 std::string("cel.material_flux=") + flux};
       p.time = time;
+      p.cell_size = 10 * kMm;
       p.resolution = format_number(feature.length / (10 * kMm), 2) + " cells across " + feature.what;
       q.points.push_back(std::move(p));
     }

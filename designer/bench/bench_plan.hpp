@@ -28,7 +28,7 @@ struct BenchPoint {
   std::vector<std::string> sets;     // --set KEY=VALUE beyond the question's own
   std::vector<std::string> models;   // --model KEY=NAME
   std::optional<double> time;        // [s] simulated time (--time); none: the scene's own end
-  std::optional<double> cell_size;   // [m] of a CEL point (the refinement series' h)
+  std::optional<double> cell_size;   // [m] of a CEL point (h of the refinement series' levels)
   ReferenceRole role = ReferenceRole::none;
   bool quick = false;
   // A number read as the question's label (the arching question reads B_c against the outlet):

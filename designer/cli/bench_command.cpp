@@ -38,6 +38,7 @@ struct BenchArguments {
   std::string tolerance = "10%";   // what --measured picks the cheapest setting for
   std::vector<std::string> only;   // question ids
   std::vector<std::string> rungs;  // L0..L3; empty: all
+  std::string finest_cell;         // CEL points on finer cells are not run; empty: all
   CommandOptions options;
 };
 
@@ -57,7 +58,24 @@ std::vector<BenchQuestion> selected_questions(const BenchArguments& args) {
   return chosen;
 }
 
-bool wanted_rung(const BenchArguments& args, const BenchPoint& p) {
+// [m] --finest-cell, or 0 when not given.
+double finest_cell(const BenchArguments& args) {
+  if (args.finest_cell.empty()) return 0.0;
+  double h = 0.0;
+  try {
+    h = parse_quantity_as(args.finest_cell, dim::length, false);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--finest-cell", args.finest_cell,
+                     std::string(e.what()) + "; expected a length, e.g. 5 mm");
+  }
+  if (!(h > 0.0))
+    throw InputError("--finest-cell", args.finest_cell, "expected a positive length, e.g. 5 mm");
+  return h;
+}
+
+// The point is of a chosen rung and, for a CEL point, on cells no finer than --finest-cell.
+bool wanted_point(const BenchArguments& args, double finest, const BenchPoint& p) {
+  if (finest > 0.0 && p.cell_size && *p.cell_size < finest * (1.0 - 1e-9)) return false;
   return args.rungs.empty() || std::find(args.rungs.begin(), args.rungs.end(), p.rung) != args.rungs.end();
 }
 
@@ -113,13 +131,15 @@ struct BenchRuns {
 
 // Each selected run once (the drum's angle and regime share theirs), read back when a run.json
 // of the same invocation is in its folder; stops at Ctrl-C.
-BenchRuns make_runs(const BenchArguments& args, const std::vector<BenchQuestion>& questions,
+BenchRuns make_runs(const BenchArguments& args, double finest,
+                    const std::vector<BenchQuestion>& questions,
                     const std::filesystem::path& runs_root) {
   std::vector<std::pair<const BenchQuestion*, const BenchPoint*>> todo;
   std::set<std::filesystem::path> seen;
   for (const auto& q : questions)
     for (const auto& p : q.points)
-      if ((!args.quick || p.quick) && wanted_rung(args, p) && seen.insert(bench_run_folder(runs_root, q, p)).second)
+      if ((!args.quick || p.quick) && wanted_point(args, finest, p) &&
+          seen.insert(bench_run_folder(runs_root, q, p)).second)
         todo.emplace_back(&q, &p);
   BenchRuns runs;
   const bool say = args.options.human_output();
@@ -219,6 +239,7 @@ int run_bench(const BenchArguments& args) {
   const auto start = std::chrono::steady_clock::now();
   if (args.measured) return show_measured(args);
   const std::vector<BenchQuestion> questions = selected_questions(args);
+  const double finest = finest_cell(args);
   if (args.list) {
     list_bench(questions);
     return kExitOk;
@@ -226,7 +247,7 @@ int run_bench(const BenchArguments& args) {
   const std::filesystem::path out = args.options.out.empty() ? std::string("out/bench") : args.options.out;
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
-  const BenchRuns runs = make_runs(args, questions, out / "runs");
+  const BenchRuns runs = make_runs(args, finest, questions, out / "runs");
 
   std::vector<BenchQuestionTable> tables;
   std::vector<std::map<std::string, BenchRun>> by_question(questions.size());
@@ -299,6 +320,11 @@ void add_bench_command(Command& program, int& exit_code) {
       .delimiter(',')
       .one_of({"L0", "L1", "L2", "L3"})
       .type_name("RUNG[,RUNG...]");
+  command
+      .option(
+          "--finest-cell", args->finest_cell,
+          "CEL points on cells finer than this are not run (each halving costs about 8x), e.g. 5mm")
+      .type_name("LENGTH");
   command
       .option("--out", args->options.out,
               "output folder (default out/bench); runs already in it are read back, not run again")

@@ -57,6 +57,33 @@ TEST(BenchCommand, UnknownQuestionIsRefusedByName) {
   fs::remove_all(dir);
 }
 
+// --finest-cell leaves the CEL points on finer cells unrun ("not run" in the table) and runs the
+// coarser ones: on the 37 deg plane, 40 mm is coarser than every level (20 mm down), so the CEL
+// rung makes no run at all; a finest cell without a length unit is refused (exit 2, nothing
+// written).
+TEST(BenchCommand, FinestCellLeavesFinerCelPointsUnrun) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const feedflow::testing::Run bad = run_feedflow(
+      "bench --rungs L2 --only chute_stopping_thickness_37 --finest-cell 5 --out b", dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--finest-cell"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "b"));
+  const feedflow::testing::Run r = run_feedflow(
+      "bench --rungs L2 --only chute_stopping_thickness_37 --finest-cell 40mm --out b", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("0 run(s) made, 0 read back"), std::string::npos) << r.out;
+  const auto answers =
+      nlohmann::json::parse(slurp(dir / "b" / "bench.json"))["questions"][0]["answers"];
+  int cel = 0;
+  for (const auto& a : answers)
+    if (a["rung"] == "L2") {
+      ++cel;
+      EXPECT_EQ(a["status"], "not run") << a.dump();
+    }
+  EXPECT_GE(cel, 4);  // 20, 10, 5, 2.5 mm and finer
+  fs::remove_all(dir);
+}
+
 }  // namespace
 
 namespace {
