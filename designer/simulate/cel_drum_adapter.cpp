@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "designer/simulate/cel_scene_adapter.hpp"
+#include "fullsim/cel/drum_bed_state.hpp"
 #include "fullsim/cel/drum_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "fullsim/common/drum_surface_fit.hpp"
 #include "fullsim/common/steady_angle.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
@@ -15,7 +18,28 @@ namespace feedflow {
 namespace {
 
 constexpr double kSurfaceSpan = 0.5;  // the surface is fitted over |x - x_c| <= this x R
-enum Column { kTime, kAngle, kKineticEnergy, kMass };
+enum Column {
+  kTime,
+  kAngle,
+  kKineticEnergy,
+  kMass,
+  kAirborne,
+  kOverTop,
+  kSolidBody,
+  kShellSpeed,
+  kChordLow,
+  kChordHigh,
+  kSurface
+};
+// The surface's height is sampled at these fractions of its chord, for the bulge of the surface
+// averaged over the steady window, as on the particle rung.
+constexpr int kStations = 17;
+double station(int k) { return -0.8 + 0.1 * k; }
+std::vector<double> stations() {
+  std::vector<double> f(kStations);
+  for (int k = 0; k < kStations; ++k) f[k] = station(k);
+  return f;
+}
 
 const Drum& drum_of(const SimulationRequest& r) { return std::get<Drum>(r.case_data.equipment); }
 
@@ -34,13 +58,43 @@ class CelDrumAdapter final : public CelSceneAdapter {
         section_(cel::drum_section(drum_, cel_cell_size(request.case_data, 0.005))) {}
 
   std::vector<TimeSeriesColumn> columns() const override {
-    return {{"time", "s"}, {"surface_angle", "deg"}, {"kinetic_energy", "J"}, {"mass", "kg"}};
+    std::vector<TimeSeriesColumn> c = {{"time", "s"},
+                                       {"surface_angle", "deg"},
+                                       {"kinetic_energy", "J"},
+                                       {"mass", "kg"},
+                                       {"airborne_fraction", ""},
+                                       {"over_top_fraction", ""},
+                                       {"solid_body_fraction", ""},
+                                       {"shell_speed_ratio", ""},
+                                       {"surface_chord_low", "m"},
+                                       {"surface_chord_high", "m"}};
+    for (int k = 0; k < kStations; ++k) {
+      char name[48];
+      std::snprintf(name, sizeof name, "surface_height_at_chord_%+.1f", station(k));
+      c.push_back({name, "m"});
+    }
+    return c;
   }
 
   std::vector<double> sample() override {
     const auto& s = run().solver();
     const auto surface = cel::drum_surface(s, section_, kSurfaceSpan);
-    return {s.time(), surface.slope_angle / kDegree, drum_.length * s.kinetic_energy(), drum_.length * s.total_mass()};
+    const double speed = run().phase() == cel::ScenePhase::event ? drum_.speed : 0.0;
+    const cel::FreeSurface chord = cel::drum_surface(s, section_, 1.0);
+    const DrumBedState b = cel::drum_bed_state(s, section_, chord, speed);
+    std::vector<double> row = {s.time(),
+                               surface.slope_angle / kDegree,
+                               drum_.length * s.kinetic_energy(),
+                               drum_.length * s.total_mass(),
+                               b.airborne_fraction,
+                               b.over_top_fraction,
+                               b.solid_body_fraction,
+                               b.shell_speed_ratio};
+    const cel::ChordProfile profile = cel::chord_profile(chord, stations());
+    row.push_back(profile.low);
+    row.push_back(profile.high);
+    row.insert(row.end(), profile.height.begin(), profile.height.end());
+    return row;
   }
 
   std::string stop(const TimeSeries& series) const override {
@@ -66,8 +120,17 @@ class CelDrumAdapter final : public CelSceneAdapter {
                                                               Rung::L2, ""});
         record.verdict.reasons.push_back("simulated dynamic angle of repose " + format_quantity(a.angle, "deg", 3) +
                                          " (swing " + format_quantity(a.swing, "deg", 3) + " peak to peak)");
+        const DrumRegimeCall regime = classify_drum_bed(steady_state(result.series, a));
+        record.results.emplace_back("regime", Estimate{std::string(to_string(regime.regime)), "",
+                                                       std::nullopt, std::nullopt,
+                                                       model_label() +
+                                                           ": measured bed state, mean over "
+                                                           "the steady window (" +
+                                                           regime.reason + ")",
+                                                       Rung::L2, ""});
       } else {
-        record.verdict.reasons.push_back("the run ended within the spin-up: no steady angle");
+        record.verdict.reasons.push_back(
+            "the run ended within the spin-up: no steady angle or regime");
       }
       if (result.end == RunEnd::duration && !request_.end_time)
         record.verdict.reasons.push_back("the angle had not converged by the end of the run");
@@ -112,8 +175,13 @@ class CelDrumAdapter final : public CelSceneAdapter {
         "The angle is the least-squares slope of the volume fraction 0.5 line, taken across "
         "the current gravity direction over the central half of the diameter; measured as on "
         "every rung: the spin-up (0.15 of a turn, at least 0.5 s) left out, the mean over the last "
-        "two windows of 0.1 of a turn (at least 0.5 s each), converged when they agree within 1 deg, "
-        "the band 2 SD of the sampled angle."};
+        "two windows of 0.1 of a turn (at least 0.5 s each), converged when they agree within "
+        "1 deg, the band 2 SD of the sampled angle.",
+        "Regime from the bed state measured as on the particle rung, with the cells' mass for "
+        "particle counts (fullsim/cel/drum_bed_state.hpp): in flight is material in cells clear "
+        "of the bed by two cells, so a coarse grid sees less of it, and its bed avalanches as a "
+        "block (the 145 mm drum on 10 mm cells slides on the shell at 10 rpm); thresholds in "
+        "fullsim/common/drum_bed_regime.hpp."};
   }
 
  private:
@@ -123,6 +191,43 @@ class CelDrumAdapter final : public CelSceneAdapter {
     for (const auto& row : series.rows())
       if (row[kTime] > run().event_time()) a.push_back({row[kTime] - run().event_time(), row[kAngle] * kDegree, true});
     return a;
+  }
+
+  // The bed state's columns averaged over the steady window, with the angle's swing and the
+  // bulge of the mean surface (the chord's ends and its heights averaged over the samples that
+  // found a surface).
+  DrumBedState steady_state(const TimeSeries& series, const SteadyAngle& a) const {
+    DrumBedState b;
+    b.shell_speed_ratio = 0.0;
+    int n = 0, found = 0;
+    double low = 0.0, high = 0.0;
+    std::vector<double> height(kStations, 0.0);
+    for (const auto& row : series.rows()) {
+      const double t = row[kTime] - run().event_time();
+      if (!(t > a.from) || t > a.to) continue;
+      if (row[kChordHigh] > row[kChordLow]) {
+        low += row[kChordLow], high += row[kChordHigh], ++found;
+        for (int k = 0; k < kStations; ++k) height[k] += row[kSurface + k];
+      }
+      b.airborne_fraction += row[kAirborne];
+      b.over_top_fraction += row[kOverTop];
+      b.solid_body_fraction += row[kSolidBody];
+      b.shell_speed_ratio += row[kShellSpeed];
+      ++n;
+    }
+    if (n == 0) return DrumBedState{};
+    b.airborne_fraction /= n;
+    b.over_top_fraction /= n;
+    b.solid_body_fraction /= n;
+    b.shell_speed_ratio /= n;
+    b.angle_swing = a.swing;
+    std::vector<SurfacePoint> mean;
+    if (found > 0)
+      for (int k = 0; k < kStations; ++k)
+        mean.push_back({0.5 * (low + high) / found + 0.5 * station(k) * (high - low) / found,
+                        height[k] / found});
+    b.surface_bulge = fit_drum_surface(mean, section_.radius).bulge;
+    return b;
   }
 
   const Drum& drum_;

@@ -224,8 +224,11 @@ class DemDrumAdapter final : public SceneAdapter {
                     ? "filling by " + scene_.rain().describe() + " (the fill line): " + scene_.fill_report().summary()
                     : std::string("filling by rain-fall, settled and trimmed to the fill line (done by the run the "
                                   "checkpoint continues)"));
-    a.push_back("regime from the measured bed state (particles in flight, solid-body fraction, over-the-top "
-                "fraction, surface bend, angle swing, shell slip; thresholds in fullsim/dem/scene/drum_bed_regime.hpp)");
+    a.push_back(
+        "regime from the measured bed state (particles in flight, solid-body fraction, "
+        "over-the-top "
+        "fraction, surface bend, angle swing, shell slip; thresholds in "
+        "fullsim/common/drum_bed_regime.hpp)");
   }
 
  private:

@@ -1,35 +1,17 @@
 #pragma once
-// The free surface of a drum's bed and its slope, the dynamic angle of repose (seed section
-// 3.3: "AoR = free-surface slope at steady state"). Works on the cross-section: x across the
-// drum, z up, the axis at the origin. The bed is cut into columns one particle diameter
-// wide; a column's surface point is its highest particle still in contact
-// with the bed below it (gap to the next lower centre below 2.5 radii, so particles in free
-// flight above the bed are not surface points; a column topped at the shell has none). The dynamic angle is the slope of a
-// least-squares line through the surface points of the central part of the chord (reduced_
-// models.md section 4: "define the AoR as the mid-chord slope"; the ends of the chord touch the
-// shell). The bulge is the largest distance between a cubic fitted to the whole chord and that
-// line, over the drum radius: ~0 for the flat surface of rolling, large for the S- or kidney-
-// shaped surface of cascading.
+// The free surface of a DEM drum's bed: its points, fitted by fullsim/common/drum_surface_fit.hpp
+// (the dynamic angle and the bulge). Works on the cross-section: x across the drum, z up, the
+// axis at the origin. The bed is cut into columns one particle diameter wide; a column's
+// surface point is its highest particle still in contact with the bed below it (gap to the next
+// lower centre below 2.5 radii, so particles in free flight above the bed are not surface
+// points; a column topped at the shell has none).
 #include <cstddef>
 #include <functional>
 #include <vector>
 
+#include "fullsim/common/drum_surface_fit.hpp"
+
 namespace feedflow {
-
-struct SurfacePoint {
-  double x = 0.0;  // across the drum [m]
-  double z = 0.0;  // up [m]
-};
-
-struct DrumSurfaceFit {
-  bool valid = false;          // enough surface points (at least 4 in the central part)
-  double slope_angle = 0.0;    // atan(dz/dx) of the central line [rad]
-  double intercept = 0.0;      // z of the line at x = 0 [m]
-  double bulge = 0.0;          // max |cubic - line| over the chord / drum radius [-]
-  double chord_low = 0.0;      // x range of the surface points [m]
-  double chord_high = 0.0;
-  std::size_t points = 0;      // surface points in the central fit
-};
 
 // The tops of the bed's columns, what the surface points are found from: per column its
 // particle count and its `depth` highest centres in descending order, padded with -infinity.
@@ -56,9 +38,5 @@ std::vector<SurfacePoint> surface_points(const ColumnTops& tops, double particle
 std::vector<SurfacePoint> bed_surface_points(const std::vector<SurfacePoint>& particles,
                                              double particle_radius, double drum_radius,
                                              const std::function<void(ColumnTops&)>& merge = {});
-
-// The fit over the central `central_fraction` of the chord (0.6: the middle 60 %).
-DrumSurfaceFit fit_drum_surface(const std::vector<SurfacePoint>& surface, double drum_radius,
-                                double central_fraction = 0.6);
 
 }  // namespace feedflow

@@ -18,8 +18,8 @@
 #include <optional>
 #include <ostream>
 
+#include "fullsim/common/drum_bed_regime.hpp"
 #include "fullsim/dem/dem_engine.hpp"
-#include "fullsim/dem/scene/drum_bed_regime.hpp"
 #include "fullsim/dem/scene/drum_free_surface.hpp"
 #include "fullsim/dem/scene/rain_fill.hpp"
 

@@ -2,7 +2,7 @@
 // The bed behaviour (regime) of a rotating drum classified from its measured state, not from
 // the Froude number: Mellmann (2001, Powder Technol. 118:251) defines the regimes by how the
 // bed moves, and reduced_models.md section 4 warns that his Froude bands do not match the
-// seed's labels, so the DEM decides from what the particles do:
+// seed's labels, so the full rungs decide from what the bed does:
 //   centrifuging: the bed turns with the shell as a solid body and covers the top of the drum
 //                 (Fr >= 1 at the shell, >= 1/sqrt(1 - f) for the whole bed);
 //   cataracting:  particles leave the bed and fly through the free space above it;
@@ -33,25 +33,26 @@ const char* to_string(DrumBedRegime regime);
 
 // Averages over the steady part of a run (or one state).
 struct DrumBedState {
-  double surface_bulge = 0.0;         // max |cubic - line| of the surface over the radius [-]
-  double angle_swing = 0.0;           // peak-to-peak of the surface angle over the window [rad]
-  double airborne_fraction = 0.0;     // particles > 3 radii above the fitted surface, off the shell [-]
-  double over_top_fraction = 0.0;     // particles above 0.8 R (over the top of the drum) [-]
-  double solid_body_fraction = 0.0;   // particles moving within 0.1 omega R of omega x r [-]
-  double shell_speed_ratio = 1.0;     // mean tangential speed of the shell layer / shell speed [-]
-  double particles = 0.0;             // particles in the bed (the fractions' denominator) [-]
+  double surface_bulge = 0.0;  // max |cubic - line| of the surface over the radius [-]
+  double angle_swing = 0.0;    // peak-to-peak of the surface angle over the window [rad]
+  double airborne_fraction =
+      0.0;  // of the bed: > 3 particle radii (2 cells) above the fitted surface, off the shell [-]
+  double over_top_fraction = 0.0;    // of the bed above 0.8 R (over the top of the drum) [-]
+  double solid_body_fraction = 0.0;  // of the bed moving within 0.1 omega R of omega x r [-]
+  double shell_speed_ratio = 1.0;    // mean tangential speed of the shell layer / shell speed [-]
+  double particles = 0.0;  // particles in the bed (the fractions' denominator); 0: a continuum [-]
 };
 
 struct DrumRegimeCriteria {
-  double centrifuging_solid_body = 0.8;   // and over_top_fraction above:
+  double centrifuging_solid_body = 0.8;  // and over_top_fraction above:
   double centrifuging_over_top = 0.08;
-  double cataracting_airborne = 0.03;     // 3 % of the bed in flight
-  double cascading_airborne = 0.001;      // 0.1 %, and at least one particle on average (a
-                                          // small bed's fraction below one particle is noise)
-  double slipping_shell_speed = 0.5;      // the shell layer moves at less than half the shell
-  double slumping_solid_body = 0.75;      // and the angle swinging peak-to-peak by more than:
-  double slumping_swing = 0.09;           // [rad] (5 deg)
-  double cascading_bulge = 0.25;          // the mean surface bending by 25 % of R from its line
+  double cataracting_airborne = 0.03;  // 3 % of the bed in flight
+  double cascading_airborne = 0.001;   // 0.1 %, and at least one particle on average (a
+                                       // small bed's fraction below one particle is noise)
+  double slipping_shell_speed = 0.5;   // the shell layer moves at less than half the shell
+  double slumping_solid_body = 0.75;   // and the angle swinging peak-to-peak by more than:
+  double slumping_swing = 0.09;        // [rad] (5 deg)
+  double cascading_bulge = 0.25;       // the mean surface bending by 25 % of R from its line
 };
 
 struct DrumRegimeCall {
@@ -59,6 +60,7 @@ struct DrumRegimeCall {
   std::string reason;  // which measured quantity decided, with its value and threshold
 };
 
-DrumRegimeCall classify_drum_bed(const DrumBedState& state, const DrumRegimeCriteria& criteria = {});
+DrumRegimeCall classify_drum_bed(const DrumBedState& state,
+                                 const DrumRegimeCriteria& criteria = {});
 
 }  // namespace feedflow
