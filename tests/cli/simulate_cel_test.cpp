@@ -156,3 +156,28 @@ TEST_F(SimulateCel, HopperSectionReachesThePlanAndTheResults) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("cel.hopper_section"), std::string::npos);
 }
+
+namespace {
+
+// The CEL drum reports its regime from the measured bed state, as the particle rung does: at
+// 50 rpm on 10 mm cells the bed cascades (the seed's label at 50 rpm; measured: its mean
+// surface bends by 38.5 % of R against the 25 % threshold), the time series carries the bed
+// state and the surface's profile, all finite.
+TEST_F(SimulateCel, DrumReportsItsRegimeFromTheBedState) {
+  const auto r = run_feedflow(
+      "simulate cases/rotating_drum_20rpm.toml --solver cel --set cel.cell_size=10mm "
+      "--set drum.speed=50rpm --out drum",
+      dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(dir_ / "drum/results.json"));
+  const auto& regime = j.at("results").at("regime");
+  EXPECT_EQ(regime.at("value"), "cascading");
+  EXPECT_EQ(regime.at("rung"), "L2");
+  EXPECT_NE(regime.at("model").get<std::string>().find("measured bed state"), std::string::npos);
+  const std::string series = slurp(dir_ / "drum/timeseries.csv");
+  EXPECT_NE(series.find("solid_body_fraction"), std::string::npos);
+  EXPECT_NE(series.find("surface_height_at_chord_+0.8 [m]"), std::string::npos);
+  EXPECT_EQ(series.find("nan"), std::string::npos);
+}
+
+}  // namespace

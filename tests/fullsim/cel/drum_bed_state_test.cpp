@@ -3,12 +3,11 @@
 // slides under give the two limits of the measures, and the classifier names them.
 #include <gtest/gtest.h>
 
-#include <numbers>
-
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/drum_bed_state.hpp"
 #include "fullsim/cel/drum_scene.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/cel/seed_drum.hpp"
 
 namespace feedflow::cel {
 namespace {
@@ -16,11 +15,7 @@ namespace {
 // The seed drum (145 mm, 50 % fill, 20 rpm), loose pine, 10 mm cells, `turning` seconds after
 // the shell starts; the bed state then.
 DrumBedState turned_bed(double wall_friction_angle, DrumFrame frame, double turning) {
-  Drum drum;
-  drum.diameter = 0.145;
-  drum.length = 0.202;
-  drum.fill_fraction = 0.5;
-  drum.speed = 20.0 * 2.0 * std::numbers::pi / 60.0;
+  const Drum drum = seed_drum(20.0);
   const double h = 0.01;
   CelScene scene = make_drum_scene(drum, wall_friction_angle, {290.0, 0.7102}, h, frame);
   CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));

@@ -14,6 +14,7 @@
 #include "fullsim/cel/drum_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
 #include "models/units/angle.hpp"
+#include "tests/fullsim/cel/seed_drum.hpp"
 
 namespace feedflow::cel {
 namespace {
@@ -26,11 +27,7 @@ struct DrumTurn {
 // The seed drum (145 mm, 50 % fill, 20 rpm), loose pine, 10 mm cells, run `turning` seconds
 // after the shell starts; the surface slope over the central half of the diameter.
 DrumTurn turn_drum(double wall_friction_angle, double turning, DrumFrame frame = DrumFrame::shell) {
-  Drum drum;
-  drum.diameter = 0.145;
-  drum.length = 0.202;
-  drum.fill_fraction = 0.5;
-  drum.speed = 20.0 * 2.0 * std::numbers::pi / 60.0;
+  const Drum drum = seed_drum(20.0);
   const double h = 0.01;
   CelScene scene = make_drum_scene(drum, wall_friction_angle, {290.0, 0.7102}, h, frame);
   CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));
@@ -78,11 +75,7 @@ struct DrumRoll {
 // The seed drum (145 mm, 50 % fill), loose pine, 20 deg shell, PLIC (the drum scene's default),
 // turned at `rpm` for `turning` seconds; samples every 0.02 s.
 DrumRoll roll_drum(double rpm, double h, double turning) {
-  Drum drum;
-  drum.diameter = 0.145;
-  drum.length = 0.202;
-  drum.fill_fraction = 0.5;
-  drum.speed = rpm * 2.0 * std::numbers::pi / 60.0;
+  const Drum drum = seed_drum(rpm);
   CelScene scene = make_drum_scene(drum, 20.0 * kDegree, {290.0, 0.7102}, h);
   CelSceneRun run(scene, make_hypoplastic_model(loblolly_pine_table1()));
   while (run.phase() == ScenePhase::gravity) run.step();
@@ -157,11 +150,7 @@ TEST(CelDrumScene, LONG_RollsAt10And20RpmTheAngleRisingWithSpeed) {
 // A restart in the turning frame continues bit-identically: the checkpoint keeps the frame's
 // start, so gravity and the fictitious forces pick up where they were (20 mm cells).
 TEST(CelDrumScene, RestartInTheTurningFrameIsBitIdentical) {
-  Drum drum;
-  drum.diameter = 0.145;
-  drum.length = 0.202;
-  drum.fill_fraction = 0.5;
-  drum.speed = 20.0 * 2.0 * std::numbers::pi / 60.0;
+  const Drum drum = seed_drum(20.0);
   const CelScene scene = make_drum_scene(drum, 20.0 * kDegree, {290.0, 0.7102}, 0.02);
   const HypoplasticModel pine = make_hypoplastic_model(loblolly_pine_table1());
   CelSceneRun straight(scene, pine);
