@@ -35,8 +35,9 @@ const char* to_string(DrumBedRegime regime);
 struct DrumBedState {
   double surface_bulge = 0.0;  // max |cubic - line| of the surface over the radius [-]
   double angle_swing = 0.0;    // peak-to-peak of the surface angle over the window [rad]
-  double airborne_fraction =
-      0.0;  // of the bed: > 3 particle radii (2 cells) above the fitted surface, off the shell [-]
+  // Of the bed in flight, off the shell: more than 3 particle radii above the fitted surface
+  // line (DEM), in cells clear of the bed by two cells (CEL) [-].
+  double airborne_fraction = 0.0;
   double over_top_fraction = 0.0;    // of the bed above 0.8 R (over the top of the drum) [-]
   double solid_body_fraction = 0.0;  // of the bed moving within 0.1 omega R of omega x r [-]
   double shell_speed_ratio = 1.0;    // mean tangential speed of the shell layer / shell speed [-]
