@@ -8,17 +8,20 @@
 
 namespace feedflow::cel {
 
+double surface_height(const FreeSurface& surface, double station) {
+  const std::vector<double>& x = surface.x;  // ascending (drum_surface walks across)
+  for (std::size_t p = 1; p < x.size(); ++p)
+    if (x[p - 1] <= station && station <= x[p]) {
+      const double w = x[p] > x[p - 1] ? (station - x[p - 1]) / (x[p] - x[p - 1]) : 0.0;
+      return (1.0 - w) * surface.y[p - 1] + w * surface.y[p];
+    }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 std::vector<double> surface_heights(const FreeSurface& surface,
                                     const std::vector<double>& stations) {
-  std::vector<double> u(stations.size(), std::numeric_limits<double>::quiet_NaN());
-  const std::vector<double>& x = surface.x;  // ascending (drum_surface walks across)
-  for (std::size_t k = 0; k < stations.size(); ++k)
-    for (std::size_t p = 1; p < x.size(); ++p)
-      if (x[p - 1] <= stations[k] && stations[k] <= x[p]) {
-        const double w = x[p] > x[p - 1] ? (stations[k] - x[p - 1]) / (x[p] - x[p - 1]) : 0.0;
-        u[k] = (1.0 - w) * surface.y[p - 1] + w * surface.y[p];
-        break;
-      }
+  std::vector<double> u(stations.size());
+  for (std::size_t k = 0; k < stations.size(); ++k) u[k] = surface_height(surface, stations[k]);
   return u;
 }
 
@@ -61,7 +64,6 @@ DrumBedState drum_bed_state(const CelSolver& solver, const DrumSection& section,
     if (!(m > 0.0) || cells.solid[c]) continue;
     const Eigen::Vector2d d = g.cell_centre(c) - section.centre;
     const double radial = d.norm(), s = d.dot(across), u = d.dot(up);
-    const double surface_u = surface_heights(surface, {s})[0];  // NaN beyond the chord
     NodeVector v = NodeVector::Zero();
     for (std::size_t a : g.cell_nodes(c)) v += 0.25 * solver.nodes().velocity[a];
     const NodeVector turn = speed * NodeVector(-d.y(), d.x());  // the shell's rigid turn at d
@@ -70,7 +72,7 @@ DrumBedState drum_bed_state(const CelSolver& solver, const DrumSection& section,
     if (radial < R - 2.0 * h && clear_of_bed(c)) airborne += m;
     if (u > 0.8 * R) over_top += m;
     if ((v_lab - turn).norm() < 0.1 * std::abs(speed) * R) solid += m;
-    if (radial > R - h && u < surface_u - 2.0 * h) {  // false beyond the chord (NaN)
+    if (radial > R - h && u < surface_height(surface, s) - 2.0 * h) {  // false beyond the chord
       shell += m;
       shell_speed += m * v_lab.dot(NodeVector(-d.y(), d.x())) / radial;
     }

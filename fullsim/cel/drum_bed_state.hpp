@@ -24,8 +24,9 @@ namespace feedflow::cel {
 DrumBedState drum_bed_state(const CelSolver& solver, const DrumSection& section,
                             const FreeSurface& surface, double speed);
 
-// The surface's height (up, from the centre) at each station across the chord [m], linear
-// between its points; NaN outside them.
+// The surface's height (up, from the centre) at a station across the chord [m], linear between
+// its points; NaN outside them. surface_heights: the same at each station.
+double surface_height(const FreeSurface& surface, double station);
 std::vector<double> surface_heights(const FreeSurface& surface,
                                     const std::vector<double>& stations);
 

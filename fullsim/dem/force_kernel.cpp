@@ -1,7 +1,5 @@
 #include "fullsim/dem/force_kernel.hpp"
 
-#include "fullsim/dem/law_forces.hpp"
-
 namespace feedflow {
 
 int lane_bits_available() {
@@ -18,11 +16,16 @@ int lane_bits_available() {
 #endif
 }
 
+// One force_kernel_normal_<I>.cpp per normal part.
+static_assert(NormalParts::kSize == 4,
+              "a normal part was added or removed: add or remove its "
+              "fullsim/dem/force_kernel_normal_<I>.cpp");
+
 std::unique_ptr<ForceKernel> make_force_kernel(const ContactLawChoice& choice,
                                                const DemParameters& dem) {
-  return with_contact_law(choice, [&](auto tag) -> std::unique_ptr<ForceKernel> {
-    using Law = typename decltype(tag)::type;
-    return std::make_unique<LawForces<Law>>(dem);
+  return choice.normal.visit([&](auto normal) {
+    using Normal = typename decltype(normal)::type;
+    return make_force_kernel_of_normal<NormalParts::index_of<Normal>()>(choice, dem);
   });
 }
 

@@ -62,4 +62,11 @@ class ForceKernel {
 std::unique_ptr<ForceKernel> make_force_kernel(const ContactLawChoice& choice,
                                                const DemParameters& dem);
 
+// make_force_kernel() for the laws whose normal part is NormalParts' part I (choice.normal is not
+// read). Defined in law_forces.hpp and compiled in force_kernel_normal_<I>.cpp, one file per
+// normal part, so that a build spreads the compositions over its cores.
+template <std::size_t I>
+std::unique_ptr<ForceKernel> make_force_kernel_of_normal(const ContactLawChoice& choice,
+                                                         const DemParameters& dem);
+
 }  // namespace feedflow

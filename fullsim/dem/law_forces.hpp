@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #ifdef _OPENMP
@@ -249,5 +250,16 @@ class LawForces final : public ForceKernel {
   std::size_t uniform_rebuild_ = static_cast<std::size_t>(-1);
   std::size_t uniform_count_ = 0;
 };
+
+// The LawForces of `choice` with NormalParts' part I as its normal part (force_kernel.hpp).
+template <std::size_t I>
+std::unique_ptr<ForceKernel> make_force_kernel_of_normal(const ContactLawChoice& choice,
+                                                         const DemParameters& dem) {
+  using Normal = NormalParts::At<I>;
+  return with_contact_law_of_normal<Normal>(choice, [&](auto tag) -> std::unique_ptr<ForceKernel> {
+    using Law = typename decltype(tag)::type;
+    return std::make_unique<LawForces<Law>>(dem);
+  });
+}
 
 }  // namespace feedflow

@@ -102,6 +102,10 @@ std::string contact_law_name(const ContactLawChoice& choice);
 // std::invalid_argument.
 template <class F>
 decltype(auto) with_contact_law(const ContactLawChoice& choice, F&& f);
+// The same with the normal part fixed at compile time (choice.normal is not read), so that the
+// compositions of one normal part can be compiled apart from the others'.
+template <class Normal, class F>
+decltype(auto) with_contact_law_of_normal(const ContactLawChoice& choice, F&& f);
 
 // --- implementation of the dispatch ---------------------------------------------------------
 namespace contact_registry_detail {
@@ -121,18 +125,23 @@ decltype(auto) compose(F& f) {
 
 }  // namespace contact_registry_detail
 
+template <class Normal, class F>
+decltype(auto) with_contact_law_of_normal(const ContactLawChoice& c, F&& f) {
+  return c.tangential.visit([&](auto tangential) -> decltype(auto) {
+    return c.rolling.visit([&](auto rolling) -> decltype(auto) {
+      return c.cohesion.visit([&](auto cohesion) -> decltype(auto) {
+        return contact_registry_detail::compose<Normal, typename decltype(tangential)::type,
+                                                typename decltype(rolling)::type,
+                                                typename decltype(cohesion)::type>(f);
+      });
+    });
+  });
+}
+
 template <class F>
 decltype(auto) with_contact_law(const ContactLawChoice& c, F&& f) {
   return c.normal.visit([&](auto normal) -> decltype(auto) {
-    return c.tangential.visit([&](auto tangential) -> decltype(auto) {
-      return c.rolling.visit([&](auto rolling) -> decltype(auto) {
-        return c.cohesion.visit([&](auto cohesion) -> decltype(auto) {
-          return contact_registry_detail::compose<
-              typename decltype(normal)::type, typename decltype(tangential)::type,
-              typename decltype(rolling)::type, typename decltype(cohesion)::type>(f);
-        });
-      });
-    });
+    return with_contact_law_of_normal<typename decltype(normal)::type>(c, f);
   });
 }
 

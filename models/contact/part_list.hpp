@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <optional>
 #include <string_view>
+#include <tuple>
 #include <type_traits>
 
 namespace feedflow {
@@ -22,6 +23,10 @@ struct PartList {
   static constexpr std::array<std::string_view, kSize> kKeywords{Parts::kKeyword...};
   static constexpr std::array<std::string_view, kSize> kSummaries{Parts::kSummary...};
   static constexpr std::array<std::size_t, kSize> kHistorySizes{Parts::kHistorySize...};
+
+  // The part at position I.
+  template <std::size_t I>
+  using At = std::tuple_element_t<I, std::tuple<Parts...>>;
 
   template <class Part>
   static constexpr bool contains() {
