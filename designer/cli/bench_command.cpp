@@ -9,9 +9,11 @@
 #include <algorithm>
 
 #include "designer/bench/bench_plan.hpp"
-#include "designer/bench/measured_bench.hpp"
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
+#include "designer/bench/measured_bench.hpp"
+#include "designer/case/case_loader.hpp"
+#include "designer/case/shipped_cases.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/exit_codes.hpp"
@@ -115,6 +117,18 @@ DesignRecord bench_record(const std::vector<BenchQuestionTable>& tables, bool qu
   return r;
 }
 
+// Each question's case file loads with the question's settings: a missing or broken one is bad
+// input, refused before any run is made or read back (a run that failed on it would replace the
+// run saved in its folder).
+void check_case_files(const std::vector<BenchQuestion>& questions,
+                      const std::filesystem::path& root) {
+  for (const auto& q : questions) {
+    std::vector<SetOverride> overrides;
+    for (const auto& set : q.sets) overrides.push_back(parse_set_override(set));
+    load_case((root / q.case_file).string(), overrides);
+  }
+}
+
 void list_bench(const std::vector<BenchQuestion>& questions) {
   for (const auto& q : questions) {
     std::cout << q.id << ": " << q.title << '\n';
@@ -133,6 +147,7 @@ struct BenchRuns {
 // of the same invocation is in its folder; stops at Ctrl-C.
 BenchRuns make_runs(const BenchArguments& args, double finest,
                     const std::vector<BenchQuestion>& questions,
+                    const std::filesystem::path& cases_root,
                     const std::filesystem::path& runs_root) {
   std::vector<std::pair<const BenchQuestion*, const BenchPoint*>> todo;
   std::set<std::filesystem::path> seen;
@@ -146,17 +161,17 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
-    if (say && !args.tabulate && !saved_run_of(*q, *p, ".", dir))
+    if (say && !args.tabulate && !saved_run_of(*q, *p, cases_root, dir))
       std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
     if (args.tabulate) {
-      if (auto saved = saved_run_of(*q, *p, ".", dir)) {
+      if (auto saved = saved_run_of(*q, *p, cases_root, dir)) {
         runs.by_folder[dir] = std::move(*saved);
         ++runs.read_back;
       }
       continue;
     }
     bool made = false;
-    BenchRun run = run_or_read_back(*q, *p, ".", dir, made);
+    BenchRun run = run_or_read_back(*q, *p, cases_root, dir, made);
     if (!made) {
       runs.by_folder[dir] = std::move(run);
       ++runs.read_back;
@@ -244,10 +259,12 @@ int run_bench(const BenchArguments& args) {
     list_bench(questions);
     return kExitOk;
   }
+  const std::filesystem::path cases_root = shipped_case_root();
+  check_case_files(questions, cases_root);
   const std::filesystem::path out = args.options.out.empty() ? std::string("out/bench") : args.options.out;
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
-  const BenchRuns runs = make_runs(args, finest, questions, out / "runs");
+  const BenchRuns runs = make_runs(args, finest, questions, cases_root, out / "runs");
 
   std::vector<BenchQuestionTable> tables;
   std::vector<std::map<std::string, BenchRun>> by_question(questions.size());

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "designer/case/case_loader.hpp"
+#include "designer/case/shipped_cases.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/output_files.hpp"
@@ -22,14 +23,9 @@ struct CasesArguments {
   CommandOptions options;
 };
 
-fs::path default_case_folder() {
-  std::error_code ec;
-  if (fs::is_directory("cases", ec)) return "cases";
-  return fs::path(FEEDFLOW_SOURCE_DIR) / "cases";
-}
-
 int list_cases(const CasesArguments& args) {
-  const fs::path folder = args.folder.empty() ? default_case_folder() : fs::path(args.folder);
+  const fs::path folder =
+      args.folder.empty() ? shipped_case_root() / "cases" : fs::path(args.folder);
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
     throw InputError("--dir", "", "no such folder: " + folder.string());

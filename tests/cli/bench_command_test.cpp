@@ -1,5 +1,7 @@
 // `feedflow bench` as a user runs it: the reduced-model points of one question, the outputs,
 // and a second run that reads the runs back instead of making them again.
+#include <map>
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -42,6 +44,31 @@ TEST(BenchCommand, ReducedModelPointsAreMadeOnceAndReadBack) {
   EXPECT_EQ(nlohmann::json::parse(slurp(dir / "b" / "bench.json"))["questions"], json["questions"]);
   const std::string csv = slurp(dir / "b" / "bench.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + static_cast<long>(answers.size()));  // header + answers
+  fs::remove_all(dir);
+}
+
+// Where the case files come from: a folder whose cases/ lacks the question's case file is bad
+// input (exit 2, naming the file) and leaves the runs saved there and bench.json as they were;
+// a folder without cases/ reads the shipped ones, and the saved runs are read back.
+TEST(BenchCommand, MissingCaseFileIsRefusedWithoutTouchingSavedRuns) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const std::string args = "bench --quick --rungs L0 --only hopper_discharge_rate_60mm --out b";
+  ASSERT_EQ(run_feedflow(args, dir).exit_code, 0);
+  const std::string table = slurp(dir / "b" / "bench.json");
+  std::map<fs::path, std::string> saved;
+  for (const auto& run : fs::recursive_directory_iterator(dir / "b" / "runs"))
+    if (run.path().filename() == "run.json") saved[run.path()] = slurp(run.path());
+  ASSERT_EQ(saved.size(), 4u);
+  fs::remove(dir / "cases" / "pilot_hopper.toml");
+  const feedflow::testing::Run refused = run_feedflow(args, dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("pilot_hopper.toml"), std::string::npos) << refused.err;
+  EXPECT_EQ(slurp(dir / "b" / "bench.json"), table);
+  for (const auto& [path, text] : saved) EXPECT_EQ(slurp(path), text) << path;
+  fs::remove_all(dir / "cases");
+  const feedflow::testing::Run shipped = run_feedflow(args, dir);
+  ASSERT_EQ(shipped.exit_code, 0) << shipped.err;
+  EXPECT_NE(shipped.out.find("0 run(s) made, 4 read back"), std::string::npos) << shipped.out;
   fs::remove_all(dir);
 }
 
