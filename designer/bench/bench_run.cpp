@@ -117,7 +117,9 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
     const auto j = nlohmann::ordered_json::parse(in);
     if (j.at("invocation").get<std::string>() != invocation) return std::nullopt;
     const std::string saved_inputs = j.value("inputs", "");
-    if (saved_inputs.empty() ? !accept_unfingerprinted : saved_inputs != inputs) return std::nullopt;
+    const bool answered = j.contains("results") && !j.at("results").is_null();
+    if (saved_inputs.empty() ? !(accept_unfingerprinted && answered) : saved_inputs != inputs)
+      return std::nullopt;
     BenchRun run = bench_run_from_json(j);
     run.inputs = saved_inputs;
     return run;

@@ -46,7 +46,8 @@ BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,
 
 // The run saved in `folder` for this invocation and these inputs; none when there is none, it
 // was made for another invocation or other inputs, or is damaged. A run saved before inputs
-// were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to redo).
+// were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to redo) and it
+// has results (a run whose case file could not be read has no fingerprint either).
 std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation,
                                         const std::string& inputs, bool accept_unfingerprinted);
 // A run as run.json holds it, and back (throws on a damaged one).

@@ -177,7 +177,8 @@ TEST(BenchTable, LabelsAreRightOrWrongAgainstTheFinestLevel) {
 }
 
 // A saved run reads back for the same invocation and inputs only; a damaged file is not read; a
-// run saved before inputs were fingerprinted counts only where asked (a simulation).
+// run saved before inputs were fingerprinted counts only where asked (a simulation) and when it
+// has results.
 TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("feedflow_bench_run_" + std::to_string(::getpid()));
@@ -198,6 +199,10 @@ TEST(BenchRunFile, ReadsBackForTheSameInvocationAndInputsOnly) {
   save_bench_run(dir, r);
   EXPECT_FALSE(saved_bench_run(dir, r.invocation, "0123456789abcdef", false));
   EXPECT_TRUE(saved_bench_run(dir, r.invocation, "0123456789abcdef", true));
+  r.results = nullptr;  // failed before its case file was read: no fingerprint, no results
+  r.status = "failed: ./cases/pilot_hopper.toml: no such case file";
+  save_bench_run(dir, r);
+  EXPECT_FALSE(saved_bench_run(dir, r.invocation, "0123456789abcdef", true));
   std::ofstream(dir / "run.json") << "{ damaged";
   EXPECT_FALSE(saved_bench_run(dir, r.invocation, "", true));
   std::filesystem::remove_all(dir);
