@@ -4,7 +4,8 @@
 // to the fixed grid by face fluxes, split into an x and a y sweep whose order alternates every
 // step. A face's transport volume dV is dt h times the mean normal velocity of its two nodes;
 // the donor (upwind) cell gives a material volume dVm (RemapOptions::material_flux: donor cell
-// vf_D dV, a van Leer limited MUSCL face value of vf, or the PLIC cut of plic_interface), and
+// vf_D dV, a van Leer limited MUSCL face value of vf, or the PLIC cut of plic_interface; a
+// fragment with no material around it moves as donor cell), and
 // with it mass rho_f dVm, stress T_f dVm and void mass e_f rho_f dVm, where the face states are
 // the donor's (first order) or van Leer limited MUSCL face values (limited_slope.hpp; slopes
 // only between cells that both hold material, first order next to void, walls and box faces).

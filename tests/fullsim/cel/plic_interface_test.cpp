@@ -143,5 +143,30 @@ TEST(PlicInterface, TranslatedDiscKeepsItsShape) {
   expect_sharper("disc", [](NodeVector x) { return (x - NodeVector(0.15, 0.16)).norm() < 0.07; });
 }
 
+// A sliver of material beside a wall, with none around it, leaves the wall's row when it moves
+// away along the wall (the 0.07-full cell under the lifted chute gate): PLIC with the wall's
+// mirror put it in the cell's corner at the wall, away from the outflow face, and it never left.
+TEST(PlicInterface, FragmentBesideAWallMovesAlongIt) {
+  const double h = 0.01;
+  Translation t(10, h, MaterialFlux::plic);
+  for (int j = 5; j < 10; ++j) t.cells.solid[t.grid.cell(5, j)] = true;  // a plate from row 5 up
+  const std::size_t sliver = t.grid.cell(4, 5);
+  t.cells.volume_fraction[sliver] = 0.07;
+  t.cells.mass[sliver] = 0.07 * t.grid.cell_volume(sliver) * 290.0;
+  t.cells.stress[sliver] = -100.0 * Eigen::Matrix3d::Identity();
+  t.cells.void_ratio[sliver] = 0.71;
+  const double m0 = t.cells.mass[sliver];
+  t.run(NodeVector(0.0, -1.0), 0.4 * h, 10);  // 4 cells down along the plate
+  double m = 0.0, at_the_wall_row = 0.0, moment = 0.0;
+  for (std::size_t c = 0; c < t.grid.cell_count(); ++c) {
+    m += t.cells.mass[c];
+    moment += t.cells.mass[c] * t.grid.cell_centre(c).y();
+    if (t.grid.cell_j(c) >= 5) at_the_wall_row += t.cells.mass[c];
+  }
+  EXPECT_NEAR(m + t.removed, m0, 1e-12 * m0);
+  EXPECT_LT(at_the_wall_row, 0.05 * m0);
+  EXPECT_LT(moment / m, t.grid.cell_centre(sliver).y() - 2.0 * h);  // moved down (4 h exactly)
+}
+
 }  // namespace
 }  // namespace feedflow::cel
