@@ -155,11 +155,16 @@ std::vector<NodeVector> apply_wall_contact(const CelGrid& grid,
 
 void mark_wall_cells(const CelGrid& grid, const std::vector<PlacedWall>& walls,
                      CellFields& cells) {
+  // A centre on a wall's face is outside: half of its cell is open, and the cell must carry
+  // flux along the face. (Marked, the empty cells along a chute gate whose face ran through
+  // their centres walled in the full one between them: its nodes fell along the gate without
+  // end, and the run blew up at 50 m/s.)
+  const double on_face = 1e-9 * grid.cell_size;
   for (std::size_t c = 0; c < grid.cell_count(); ++c) {
     if (cells.solid[c] == kSolidFixed) continue;
     // An empty cell whose centre is inside the walls, or all of whose corners are.
     bool inside = !walls.empty() && cells.mass[c] <= 0.0;
-    if (inside && distance_to_walls(walls, grid.cell_centre(c)) > 0.0)
+    if (inside && distance_to_walls(walls, grid.cell_centre(c)) > -on_face)
       for (std::size_t a : grid.cell_nodes(c)) {
         if (!inside) break;
         inside = distance_to_walls(walls, grid.node_position(a)) <= 0.0;

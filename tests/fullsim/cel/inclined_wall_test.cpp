@@ -206,6 +206,30 @@ TEST(CelRigidWall, WallCellsAreThoseWithTheirCentreInside) {
   EXPECT_EQ(cells.solid[g.cell(0, 0)], 0);
 }
 
+// A wall face through a column of cell centres leaves that column open (half of each cell is
+// free, and material there must slide along the face) and walls in the column behind it. Marked,
+// the empty cells along the chute gate's face (through the centres of 20 mm cells) walled in the
+// full one between them, and its nodes fell along the gate until the run blew up.
+TEST(CelRigidWall, ACentreOnAWallFaceLeavesItsCellOpen) {
+  const double h = 0.02;
+  const CelGrid g = make_plane_strain_grid(32, 4, h);
+  RigidWall gate;  // the seed chute's gate plate, 0.57 to 0.61 m, on 20 mm cells
+  gate.points = {{0.61, 1.0}, {0.61, 0.0}, {0.57, 0.0}, {0.57, 1.0}};
+  const std::vector<PlacedWall> walls = {PlacedWall(gate, 0.0)};
+  CellFields cells;
+  cells.resize(g.cell_count());
+  mark_wall_cells(g, walls, cells);
+  for (int j = 0; j < 4; ++j) {
+    for (int i : {28, 30}) {  // centres on the faces, to round-off
+      EXPECT_NEAR(distance_to_walls(walls, g.cell_centre(g.cell(i, j))), 0.0, 1e-15);
+      EXPECT_EQ(cells.solid[g.cell(i, j)], 0) << "cell " << i << ", " << j;
+    }
+    EXPECT_EQ(cells.solid[g.cell(27, j)], 0);
+    EXPECT_EQ(cells.solid[g.cell(29, j)], kSolidInsideWall);
+    EXPECT_EQ(cells.solid[g.cell(31, j)], 0);
+  }
+}
+
 // No node moves into the staircase: a corner of a wall cell farther from the wall than the
 // contact distance (node (10, 20) mm, 5.4 mm from the line, a corner of the solid cell (1, 1))
 // loses its velocity into the wall like a node in contact, and reacts on the wall; a node as far

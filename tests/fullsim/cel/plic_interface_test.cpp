@@ -168,5 +168,36 @@ TEST(PlicInterface, FragmentBesideAWallMovesAlongIt) {
   EXPECT_LT(moment / m, t.grid.cell_centre(sliver).y() - 2.0 * h);  // moved down (4 h exactly)
 }
 
+// A sliver right under a wall, with dust beside it, falls away from the wall (the 0.08-full
+// cell under the lifted chute gate's lower face): the wall's mirror put it against the wall, above
+// the slab leaving through the bottom face, and it stayed while its nodes fell to 44 m/s.
+TEST(PlicInterface, FragmentUnderAWallFallsAwayFromIt) {
+  const double h = 0.01;
+  Translation t(10, h, MaterialFlux::plic);
+  for (int j = 6; j < 10; ++j)
+    for (int i = 3; i < 7; ++i) t.cells.solid[t.grid.cell(i, j)] = true;  // a plate above row 5
+  const auto fill = [&](std::size_t c, double vf) {
+    t.cells.volume_fraction[c] = vf;
+    t.cells.mass[c] = vf * t.grid.cell_volume(c) * 290.0;
+    t.cells.stress[c] = -100.0 * Eigen::Matrix3d::Identity();
+    t.cells.void_ratio[c] = 0.71;
+  };
+  const std::size_t sliver = t.grid.cell(4, 5);
+  fill(sliver, 0.083);
+  fill(t.grid.cell(5, 5), 0.0004);  // dust: the sliver is not alone, so not a donor-cell fragment
+  double m0 = 0.0;
+  for (double m : t.cells.mass) m0 += m;
+  t.run(NodeVector(0.0, -1.0), 0.4 * h, 10);  // 4 cells down, away from the plate
+  double m = 0.0, under_the_wall = 0.0, moment = 0.0;
+  for (std::size_t c = 0; c < t.grid.cell_count(); ++c) {
+    m += t.cells.mass[c];
+    moment += t.cells.mass[c] * t.grid.cell_centre(c).y();
+    if (t.grid.cell_j(c) == 5) under_the_wall += t.cells.mass[c];
+  }
+  EXPECT_NEAR(m + t.removed, m0, 1e-12 * m0);
+  EXPECT_LT(under_the_wall, 0.05 * m0);
+  EXPECT_LT(moment / m, t.grid.cell_centre(sliver).y() - 2.0 * h);  // moved down (4 h exactly)
+}
+
 }  // namespace
 }  // namespace feedflow::cel
