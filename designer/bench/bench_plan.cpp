@@ -174,6 +174,8 @@ std::vector<BenchQuestion> seed_bench_questions() {
     // The deposit the cells must resolve: about 45 mm at 29.5 deg, 3.5 mm at 37 deg (L0).
     const Feature deposit{angle == std::string("37") ? 3.5 * kMm : 45 * kMm, "the deposit"};
     add_cel_points(q, "deposit_thickness_mid_ramp", std::nullopt, deposit, angle == std::string("29_5") ? 1 : 0);
+    for (auto& p : q.points)
+      if (p.solver == Solver::cel) p.rest_key = "at_rest";
     add_dem_points(q, "deposit_thickness_mid_ramp", "24mm");
     questions.push_back(std::move(q));
   }

@@ -38,6 +38,9 @@ struct BenchPoint {
     std::string above, below;
   };
   std::optional<LabelRule> label_rule;
+  // The results key that reads "yes" when the run ended at rest (a deposit's thickness); a run
+  // that ended still flowing answers an upper bound, kept out of the reference and the ranking.
+  std::string rest_key;
   std::string resolution;            // what a CEL point resolves: "3 cells across the half outlet"
 };
 

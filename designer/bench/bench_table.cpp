@@ -47,8 +47,15 @@ BenchAnswer answer_of(const BenchPoint& p, const std::map<std::string, BenchRun>
     a.label = e["value"].get<std::string>();
   }
   a.unit = e.value("unit", "");
+  if (!p.rest_key.empty() && results.contains(p.rest_key)) {
+    const auto& rest = results[p.rest_key].at("value");
+    a.at_rest = rest.is_string() && rest.get<std::string>().rfind("yes", 0) == 0;
+  }
   return a;
 }
+
+// An answer that can enter a reference: a value (or label) from a run that ended as it must.
+bool settled(const BenchAnswer& a) { return a.at_rest.value_or(true); }
 
 std::string millimetres(double metres) { return format_number(metres * 1e3, 3); }
 
@@ -58,7 +65,9 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
   const bool categorical = q.categorical;
   std::vector<const BenchAnswer*> levels;
   for (const auto& a : answers)
-    if (a.point->role == ReferenceRole::cel_refinement && a.point->cell_size && (a.value || (categorical && a.run && a.run->done() && !a.label.empty() && a.label.rfind("no ", 0) != 0)))
+    if (a.point->role == ReferenceRole::cel_refinement && a.point->cell_size && settled(a) &&
+        (a.value || (categorical && a.run && a.run->done() && !a.label.empty() &&
+                     a.label.rfind("no ", 0) != 0)))
       levels.push_back(&a);
   if (levels.empty()) return std::nullopt;
   std::sort(levels.begin(), levels.end(),
@@ -110,7 +119,8 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
 
 std::optional<BenchReference> dem_reference(const std::vector<BenchAnswer>& answers, bool categorical) {
   for (const auto& a : answers) {
-    if (a.point->role != ReferenceRole::dem_reference || !a.run || !a.run->done()) continue;
+    if (a.point->role != ReferenceRole::dem_reference || !a.run || !a.run->done() || !settled(a))
+      continue;
     BenchReference r;
     r.unit = a.unit;
     r.source = a.point->setting + " at the seed's resolution";
@@ -166,7 +176,7 @@ BenchQuestionTable tabulate(const BenchQuestion& q, const std::map<std::string, 
       a.error = ref != 0.0 ? std::abs(*a.value - ref) / std::abs(ref) : std::abs(*a.value);
       if (a.low && a.high) a.band_holds_reference = *a.low <= ref && ref <= *a.high;
     }
-    const bool ranked = a.error && a.run;
+    const bool ranked = a.error && a.run && settled(a);
     cost.push_back(ranked ? a.run->wall_seconds : NAN);
     error.push_back(ranked ? *a.error : NAN);
   }
@@ -223,6 +233,7 @@ nlohmann::ordered_json bench_json(const std::vector<BenchQuestionTable>& tables)
       } else {
         ja["label"] = a.label;
       }
+      if (a.at_rest) ja["at_rest"] = *a.at_rest;
       ja["error"] = optional_number(a.error);
       ja["error_unit"] = q.categorical ? "wrong (1) or right (0)" : "relative";
       ja["band_holds_reference"] = a.band_holds_reference ? nlohmann::ordered_json(*a.band_holds_reference)
@@ -265,14 +276,25 @@ std::string bench_csv(const std::vector<BenchQuestionTable>& tables) {
     for (const auto& a : t.answers) {
       const BenchQuestion& q = *t.question;
       std::vector<std::string> f = {
-          q.id, a.point->rung, csv_field(a.point->setting), csv_field(a.point->resolution),
-          a.point->role != ReferenceRole::none ? "yes" : "no", a.point->quantity,
-          a.value ? csv_number(a.value) : csv_field(a.label), csv_number(a.low), csv_number(a.high), csv_field(a.unit),
+          q.id,
+          a.point->rung,
+          csv_field(a.point->setting),
+          csv_field(a.point->resolution),
+          a.point->role != ReferenceRole::none ? "yes" : "no",
+          a.point->quantity,
+          a.value ? csv_number(a.value) : csv_field(a.label),
+          csv_number(a.low),
+          csv_number(a.high),
+          csv_field(a.unit),
           q.categorical ? csv_field(t.reference.label) : csv_number(t.reference.value),
-          csv_number(t.reference.error_bar), csv_number(a.error),
+          csv_number(t.reference.error_bar),
+          csv_number(a.error),
           a.band_holds_reference ? (*a.band_holds_reference ? "yes" : "no") : "",
-          a.pareto ? "yes" : "no", a.run ? csv_number(a.run->wall_seconds) : "",
-          a.run ? std::to_string(a.run->cores) : "", csv_field(a.run ? a.run->status : "not run"),
+          a.pareto ? "yes" : "no",
+          a.run ? csv_number(a.run->wall_seconds) : "",
+          a.run ? std::to_string(a.run->cores) : "",
+          csv_field(a.run ? a.run->status + (settled(a) ? "" : " (not at rest: an upper bound)")
+                          : "not run"),
           csv_field(bench_invocation(q, *a.point))};
       for (std::size_t k = 0; k < f.size(); ++k) s += (k ? "," : "") + f[k];
       s += "\n";

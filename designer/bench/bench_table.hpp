@@ -38,6 +38,9 @@ struct BenchAnswer {
   std::optional<double> error;       // relative (numbers) or 0/1 (labels); none without reference
   std::optional<bool> band_holds_reference;
   bool pareto = false;
+  // Whether the run ended at rest, for a point that asks (BenchPoint::rest_key); false: the value
+  // is an upper bound, out of the reference and the ranking.
+  std::optional<bool> at_rest;
 };
 
 struct BenchQuestionTable {

@@ -26,6 +26,7 @@ MeasuredAnswer answer_of(const nlohmann::json& a) {
   m.wall_seconds = number(a, "wall_seconds");
   if (a.contains("cores") && a["cores"].is_number()) m.cores = a["cores"].get<int>();
   m.in_reference = a.value("in_reference", false);
+  m.at_rest = a.value("at_rest", true);
   return m;
 }
 
@@ -81,7 +82,8 @@ const MeasuredAnswer* cheapest_within(const MeasuredQuestion& q, double toleranc
   const MeasuredAnswer* best = nullptr;
   if (!reference_resolves(q, tolerance)) return best;
   for (const auto& a : q.answers) {
-    if (a.status != "done" || !a.error || !a.wall_seconds || *a.error > tolerance) continue;
+    if (a.status != "done" || !a.at_rest || !a.error || !a.wall_seconds || *a.error > tolerance)
+      continue;
     if (!best || *a.wall_seconds < *best->wall_seconds) best = &a;
   }
   return best;

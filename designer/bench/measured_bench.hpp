@@ -23,6 +23,7 @@ struct MeasuredAnswer {
   std::optional<double> wall_seconds;
   int cores = 0;
   bool in_reference = false;          // one of the runs that make the reference
+  bool at_rest = true;                // false: ended still flowing, its value an upper bound
 };
 
 struct MeasuredQuestion {

@@ -120,6 +120,39 @@ TEST(BenchTable, RichardsonReferenceErrorsBandsAndFront) {
   EXPECT_EQ(chart->series.back().x, (std::vector<double>{0.003, 11.0, 170.0}));
 }
 
+// A deposit's run that ended still flowing answers an upper bound: it stays out of the
+// reference (two settled levels extrapolate to the limit 5 of 5 + 40 h), off the Pareto front
+// (though the closest), and its JSON and CSV rows say so.
+TEST(BenchTable, ARunNotAtRestIsAnUpperBoundOutOfTheReference) {
+  BenchQuestion q{"deposit", "deposit", "cases/inclined_plane_29_5.toml", {}, false, {}, {}, {}};
+  q.points = {point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
+              point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005)};
+  for (auto& p : q.points) p.rest_key = "at_rest";
+  std::map<std::string, BenchRun> runs;
+  const auto run = [](double value, double seconds, const char* rest) {
+    BenchRun r = number_run("mass_flow_rate", value, value - 0.1, value + 0.1, seconds);
+    r.results["at_rest"] = {{"value", rest}, {"unit", ""}};
+    return r;
+  };
+  runs[point_id(q.points[0])] = run(5.8, 2.0, "yes");
+  runs[point_id(q.points[1])] = run(5.4, 11.0, "yes");
+  runs[point_id(q.points[2])] = run(5.05, 170.0, "no (time limit)");
+  const BenchQuestionTable t = tabulate(q, runs);
+  ASSERT_TRUE(t.reference.value);
+  EXPECT_NEAR(*t.reference.value, 5.0, 1e-9);
+  EXPECT_NE(t.reference.source.find("two levels (20, 10 mm"), std::string::npos)
+      << t.reference.source;
+  EXPECT_EQ(t.answers[1].at_rest, std::optional<bool>(true));
+  EXPECT_EQ(t.answers[2].at_rest, std::optional<bool>(false));
+  EXPECT_TRUE(t.answers[2].error);    // its error is shown ...
+  EXPECT_FALSE(t.answers[2].pareto);  // ... but it is not ranked
+  EXPECT_TRUE(t.answers[1].pareto);
+  const auto json = bench_json({t});
+  EXPECT_EQ(json[0]["answers"][2]["at_rest"], false);
+  EXPECT_NE(bench_csv({t}).find("done (not at rest: an upper bound)"), std::string::npos);
+}
+
 // Levels that do not converge monotonically (the drum at 20 rpm: 36.7, 38.3, 45.7 deg on 20, 10,
 // 5 mm) give no order: the finest run is the reference, with the spread as its error bar, and
 // has no error of its own (it is not a point on the front).

@@ -95,6 +95,23 @@ TEST(MeasuredBench, TwoLevelOrderIsCappedAtTheRemapsFormalOrder) {
   EXPECT_NE(shipped.source.find("observed no order"), std::string::npos) << shipped.source;
 }
 
+// A run that ended still flowing is never chosen, however close: its deposit is an upper bound.
+TEST(MeasuredBench, ARunNotAtRestIsNotChosen) {
+  const MeasuredBench table =
+      parse_measured_bench(R"({"measured": {"date": "2026-12-06", "machine": "test", "commits": {}},
+    "questions": [{"id": "deposit", "title": "deposit", "kind": "number",
+      "reference": {"source": "CEL two levels", "value": 0.05, "error_bar": 0.001, "order": null, "unit": "m"},
+      "answers": [
+        {"rung": "L2", "setting": "CEL cells 20mm", "status": "done", "value": 0.0501, "at_rest": false,
+         "error": 0.002, "wall_seconds": 40.0},
+        {"rung": "L2", "setting": "CEL cells 10mm", "status": "done", "value": 0.052, "at_rest": true,
+         "error": 0.04, "wall_seconds": 200.0}]}]})");
+  const MeasuredAnswer* best = cheapest_within(*table.find("deposit"), 0.10);
+  ASSERT_NE(best, nullptr);
+  EXPECT_EQ(best->setting, "CEL cells 10mm");
+  EXPECT_EQ(cheapest_within(*table.find("deposit"), 0.01), nullptr);
+}
+
 // A damaged table is refused, not half read.
 TEST(MeasuredBench, DamagedTableIsRefused) {
   EXPECT_THROW(parse_measured_bench("{\"questions\": []}"), std::invalid_argument);
