@@ -108,16 +108,14 @@ class CelChuteAdapter final : public CelSceneAdapter {
         "Plane-strain slice along the ramp centre line: no side walls, no lateral spill (the "
         "seed's FEM was 3D half-symmetric); errs thick where the real deposit spreads sideways.",
         "Ramp no slip (chips glued on), bin back wall and gate free slip; the bin floor is the "
-        "ramp "
-        "and the gate moves normal to it, lifted at 1 m/s (speed assumed).",
+        "ramp and the gate moves normal to it, lifted at 1 m/s (speed assumed).",
         "Initial void ratio 0.7102 (seed deck) at the case's bulk density; no cohesion in the "
         "hypoplastic law.",
         "PLIC material flux unless [cel] material_flux names another: with the donor cell the "
         "deposit smears into a half-full cloud several cells deep.",
         "h at mid-ramp = sum of cell heights x volume fraction (seed FEM), measured as on every "
-        "rung: "
-        "the mean over the columns within 5 % of the ramp length of mid-ramp, the band their "
-        "range."};
+        "rung: the mean over the columns within 5 % of the ramp length of mid-ramp, the band "
+        "their range."};
   }
 
  private:
