@@ -12,6 +12,7 @@
 #include "designer/case/material_text.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/simulate/simulation.hpp"
+#include "fullsim/common/scene_run.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/atomic_file.hpp"
@@ -74,8 +75,10 @@ std::string bench_inputs_fingerprint(const BenchQuestion& q, const BenchPoint& p
   }
 }
 
-BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
-                         const std::filesystem::path& folder) {
+BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p,
+                         const std::filesystem::path& source_root,
+                         const std::filesystem::path& folder,
+                         const std::filesystem::path& restart) {
   BenchRun run;
   run.invocation = bench_invocation(q, p);
   run.commit = kCommit;
@@ -89,9 +92,10 @@ BenchRun run_bench_point(const BenchQuestion& q, const BenchPoint& p, const std:
     DesignRecord record;
     if (p.solver) {
       std::filesystem::create_directories(folder);
-      std::ofstream log(folder / "run.log");
+      std::ofstream log(folder / "run.log", restart.empty() ? std::ios::trunc : std::ios::app);
       log << std::unitbuf;  // the run's phases as they come (a long run can be followed)
-      SimulationRequest request{c, *p.solver, p.time, folder, {}, false, &log};
+      if (!restart.empty()) log << "continued from the checkpoint " << restart.string() << '\n';
+      SimulationRequest request{c, *p.solver, p.time, folder, restart, false, &log};
       const SimulationOutcome outcome = simulate(request);
       if (outcome.end == SimulationEnd::interrupted) run.status = "interrupted";
       record = outcome.record;
@@ -120,6 +124,8 @@ std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, con
     const bool answered = j.contains("results") && !j.at("results").is_null();
     if (saved_inputs.empty() ? !(accept_unfingerprinted && answered) : saved_inputs != inputs)
       return std::nullopt;
+    if (j.at("status").get<std::string>() == "interrupted")
+      return std::nullopt;  // to continue, not to read
     BenchRun run = bench_run_from_json(j);
     run.inputs = saved_inputs;
     return run;
@@ -164,6 +170,27 @@ std::optional<BenchRun> saved_run_of(const BenchQuestion& q, const BenchPoint& p
   return saved_bench_run(folder, bench_invocation(q, p), bench_inputs_fingerprint(q, p, source_root), p.solver.has_value());
 }
 
+std::filesystem::path interrupted_checkpoint(const std::filesystem::path& folder) {
+  return folder / "interrupted.h5";
+}
+
+std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folder,
+                                              const std::string& invocation,
+                                              const std::string& inputs) {
+  if (inputs.empty() || !std::filesystem::exists(interrupted_checkpoint(folder)))
+    return std::nullopt;
+  std::ifstream in(folder / "run.json");
+  if (!in) return std::nullopt;
+  try {
+    BenchRun run = bench_run_from_json(nlohmann::ordered_json::parse(in));
+    if (run.status != "interrupted" || run.invocation != invocation || run.inputs != inputs)
+      return std::nullopt;
+    return run;
+  } catch (const std::exception&) {  // damaged: start again
+    return std::nullopt;
+  }
+}
+
 BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
                           const std::filesystem::path& folder, bool& made) {
   if (auto saved = saved_run_of(q, p, source_root, folder)) {
@@ -171,8 +198,28 @@ BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std
     return std::move(*saved);
   }
   made = true;
-  BenchRun run = run_bench_point(q, p, source_root, folder);
-  if (run.status != "interrupted") save_bench_run(folder, run);
+  const auto before = interrupted_bench_run(folder, bench_invocation(q, p),
+                                            bench_inputs_fingerprint(q, p, source_root));
+  const std::filesystem::path kept = interrupted_checkpoint(folder),
+                              written = scene_checkpoint_path(folder);
+  if (!before) {  // a checkpoint left by another run must not pass for this one's
+    std::filesystem::remove(kept);
+    std::filesystem::remove(written);
+  }
+  BenchRun run =
+      run_bench_point(q, p, source_root, folder, before ? kept : std::filesystem::path());
+  if (before) {
+    run.wall_seconds += before->wall_seconds;
+    if (before->commit != run.commit) run.commit = before->commit + ", continued on " + run.commit;
+  }
+  if (run.status == "interrupted") {
+    if (!std::filesystem::exists(written))
+      return run;  // cut before its first checkpoint: nothing new to keep
+    std::filesystem::rename(written, kept);
+  } else {
+    std::filesystem::remove(kept);
+  }
+  save_bench_run(folder, run);
   return run;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // One run of a bench point, in this process (no process per point): the design check with the
 // point's model choices, or the simulation with its solver and settings, timed; and the run
-// saved in its folder (run.json), so an interrupted or repeated bench skips what is done. The
-// drum's angle and regime questions ask for the same runs, which are made once.
+// saved in its folder (run.json), so an interrupted or repeated bench skips what is done. A
+// simulation cut short (Ctrl-C, SIGTERM) keeps its checkpoint there and continues from it when
+// the point is run again. The drum's angle and regime questions ask for the same runs, which are
+// made once.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -38,16 +40,18 @@ std::filesystem::path bench_run_folder(const std::filesystem::path& root, const 
 std::string bench_inputs_fingerprint(const BenchQuestion& question, const BenchPoint& point,
                                      const std::filesystem::path& source_root);
 
-// Runs the point: case files relative to `source_root`; a simulation's files go to `folder`.
-// A run that fails (bad input, a blow-up) or is interrupted comes back with its status, never
-// as a throw.
+// Runs the point: case files relative to `source_root`; a simulation's files go to `folder`,
+// continuing from the checkpoint `restart` when one is given. A run that fails (bad input, a
+// blow-up) or is interrupted comes back with its status, never as a throw.
 BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,
-                         const std::filesystem::path& source_root, const std::filesystem::path& folder);
+                         const std::filesystem::path& source_root,
+                         const std::filesystem::path& folder,
+                         const std::filesystem::path& restart = {});
 
 // The run saved in `folder` for this invocation and these inputs; none when there is none, it
-// was made for another invocation or other inputs, or is damaged. A run saved before inputs
-// were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to redo) and it
-// has results (a run whose case file could not be read has no fingerprint either).
+// was made for another invocation or other inputs, was interrupted, or is damaged. A run saved
+// before inputs were fingerprinted counts when `accept_unfingerprinted` (a simulation: hours to
+// redo) and it has results (a run whose case file could not be read has no fingerprint either).
 std::optional<BenchRun> saved_bench_run(const std::filesystem::path& folder, const std::string& invocation,
                                         const std::string& inputs, bool accept_unfingerprinted);
 // A run as run.json holds it, and back (throws on a damaged one).
@@ -60,8 +64,17 @@ void save_bench_run(const std::filesystem::path& folder, const BenchRun& run);
 std::optional<BenchRun> saved_run_of(const BenchQuestion& question, const BenchPoint& point,
                                      const std::filesystem::path& source_root, const std::filesystem::path& folder);
 
-// The point's run read back from `folder`, or made (and saved, unless interrupted); `made` says
-// which.
+// The simulation of this invocation and these inputs that was cut short in `folder`, with its
+// wall time so far, when its checkpoint (interrupted_checkpoint) is there to continue from.
+std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folder,
+                                              const std::string& invocation,
+                                              const std::string& inputs);
+// Where a run cut short keeps its checkpoint in its folder.
+std::filesystem::path interrupted_checkpoint(const std::filesystem::path& folder);
+
+// The point's run read back from `folder`, or made and saved; `made` says which. A simulation
+// cut short is saved as interrupted with its checkpoint, and the next call continues it from
+// there: its wall time adds up, and its commit names both builds when they differ.
 BenchRun run_or_read_back(const BenchQuestion& question, const BenchPoint& point,
                           const std::filesystem::path& source_root, const std::filesystem::path& folder, bool& made);
 

@@ -162,7 +162,13 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
     if (say && !args.tabulate && !saved_run_of(*q, *p, cases_root, dir))
-      std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " " << p->setting << " ..." << std::flush;
+      std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " "
+                << p->setting
+                << (interrupted_bench_run(dir, bench_invocation(*q, *p),
+                                          bench_inputs_fingerprint(*q, *p, cases_root))
+                        ? " (continued from its checkpoint)"
+                        : "")
+                << " ..." << std::flush;
     if (args.tabulate) {
       if (auto saved = saved_run_of(*q, *p, cases_root, dir)) {
         runs.by_folder[dir] = std::move(*saved);
@@ -302,7 +308,9 @@ int run_bench(const BenchArguments& args) {
     std::cout << '\n';
   }
   if (runs.interrupted) {
-    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are kept)\n";
+    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are "
+                 "kept, a run cut "
+                 "short continues from its checkpoint)\n";
     return kExitInterrupted;
   }
   return kExitOk;

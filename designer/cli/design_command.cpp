@@ -62,7 +62,7 @@ int run_design(const DesignArguments& args) {
   if (!verify_design(verify, c, record)) {
     std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are "
                  "kept in "
-              << verify_runs.string() << ")\n";
+              << verify_runs.string() << ", a run cut short continues from its checkpoint)\n";
     return kExitInterrupted;
   }
   record.command_line = invocation();

@@ -3,16 +3,20 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "designer/bench/bench_plan.hpp"
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_text.hpp"
+#include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
 namespace {
@@ -278,6 +282,67 @@ TEST(BenchRunFile, FingerprintFollowsWhatTheAnswerReads) {
   EXPECT_NE(d0, d1);
   EXPECT_EQ(c0, c1);
   EXPECT_NE(c1, c2);
+  std::filesystem::remove_all(dir);
+}
+
+// The answer of a CEL run, without what depends on the machine (wall times, rates per second)
+// or names the run.
+nlohmann::ordered_json physics_of(const BenchRun& run) {
+  nlohmann::ordered_json j = run.results;
+  for (const char* wall : {"run_wall_time", "cell_updates_per_second"}) j.erase(wall);
+  for (auto& [key, e] : j.items())
+    for (const char* text : {"model", "source"}) e.erase(text);
+  return j;
+}
+
+// A simulation cut short (Ctrl-C part way) keeps its checkpoint, and the same point run again
+// continues from it to the answer of a run never cut, with the two parts' wall times added;
+// the answer is then read back, and the checkpoint of the cut is gone.
+TEST(BenchRunFile, ACutRunContinuesFromItsCheckpoint) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("feedflow_bench_cut_" + std::to_string(::getpid()));
+  const std::filesystem::path root = FEEDFLOW_SOURCE_DIR;
+  BenchQuestion q{
+      "rate", "rate", "cases/pilot_hopper.toml", {"hopper.outlet_width=120mm"}, false, {}, {}, {}};
+  BenchPoint cel = point("CEL cells 20mm", "L2");
+  cel.solver = Solver::cel;
+  cel.sets = {"cel.cell_size=20mm"};
+  cel.time = 0.3;
+  bool made = false;
+  const auto t0 = std::chrono::steady_clock::now();
+  const BenchRun straight = run_or_read_back(q, cel, root, dir / "straight", made);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(straight.done()) << straight.status;
+  int tried = 0, continued = 0;
+  for (double fraction : {0.5, 0.25, 0.75}) {  // a loaded machine shifts the phases: try others
+    if (continued > 0) break;
+    const auto cut = dir / ("cut" + std::to_string(++tried));
+    std::thread ctrl_c([&] {
+      std::this_thread::sleep_for(std::chrono::duration<double>(fraction * wall));
+      request_interrupt();
+    });
+    const BenchRun first = run_or_read_back(q, cel, root, cut, made);
+    ctrl_c.join();
+    clear_interrupt_request();
+    if (first.status != "interrupted") continue;  // ended before the signal
+    ASSERT_TRUE(std::filesystem::exists(interrupted_checkpoint(cut)));
+    EXPECT_FALSE(saved_run_of(q, cel, root, cut));  // not an answer to read back
+    const BenchRun second = run_or_read_back(q, cel, root, cut, made);
+    EXPECT_TRUE(made);
+    ASSERT_TRUE(second.done()) << second.status;
+    std::ifstream log(cut / "run.log");
+    const std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    EXPECT_NE(said.find("restarted from " + interrupted_checkpoint(cut).string()),
+              std::string::npos)
+        << said;
+    EXPECT_EQ(physics_of(second), physics_of(straight)) << "cut after " << fraction * wall << " s";
+    EXPECT_GT(second.wall_seconds, first.wall_seconds);
+    EXPECT_FALSE(std::filesystem::exists(interrupted_checkpoint(cut)));
+    run_or_read_back(q, cel, root, cut, made);
+    EXPECT_FALSE(made);
+    ++continued;
+  }
+  EXPECT_GE(continued, 1);
   std::filesystem::remove_all(dir);
 }
 
