@@ -90,10 +90,15 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
       r.error_bar = e.error_bar;
       r.order = e.order;
       if (!e.order) r.only_run = point_id(*c->point);  // no order: the finest run is the value
-      r.source = "CEL Richardson (" + millimetres(*a->point->cell_size) + ", " + millimetres(*b->point->cell_size) +
-                 ", " + millimetres(*c->point->cell_size) + " mm; " +
-                 (e.order ? "observed order " + format_number(*e.order, 3) + (e.asymptotic ? "" : ", outside the asymptotic range")
-                          : std::string("no observed order: not converging monotonically")) + ")";
+      r.source = "CEL Richardson (" + millimetres(*a->point->cell_size) + ", " +
+                 millimetres(*b->point->cell_size) + ", " + millimetres(*c->point->cell_size) +
+                 " mm; " +
+                 (e.order ? "observed order " + format_number(*e.order, 3) +
+                                (e.asymptotic ? "" : ", outside the asymptotic range")
+                  : e.diverging
+                      ? std::string("no observed order: diverging, each refinement moves it more")
+                      : std::string("no observed order: not converging monotonically")) +
+                 ")";
       return r;
     } catch (const std::invalid_argument&) {  // not one ratio: the two finest
     }

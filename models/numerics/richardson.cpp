@@ -38,6 +38,7 @@ RichardsonEstimate richardson(const std::array<double, 3>& h, const std::array<d
     }
   }
   // Not converging monotonically: the finest value, with the spread of the three.
+  out.diverging = e21 != 0.0 && e32 != 0.0 && (e21 > 0.0) == (e32 > 0.0);
   out.value = f[2];
   out.error_bar = std::max({std::abs(e21), std::abs(e32), std::abs(f[2] - f[0])});
   return out;

@@ -19,6 +19,7 @@ struct RichardsonEstimate {
   double error_bar = 0.0;        // >= 0, in the value's unit
   std::optional<double> order;   // observed order; none when the differences are not monotone
   bool asymptotic = false;       // an order was observed (0.5 <= p <= 8 is plausible)
+  bool diverging = false;        // no order: the differences keep their sign and grow
 };
 
 // `h`: the resolutions, coarse to fine, with one ratio (to 1e-6); `f`: the values. Throws

@@ -47,6 +47,17 @@ TEST(Richardson, OscillatingValuesHaveNoOrder) {
   EXPECT_FALSE(e.asymptotic);
   EXPECT_DOUBLE_EQ(e.value, 5.9);
   EXPECT_NEAR(e.error_bar, 0.46, 1e-12);
+  EXPECT_FALSE(e.diverging);
+}
+
+// Differences of one sign that grow (each refinement moves the value more: the drum at 20 rpm,
+// 36.08 / 43.05 / 52.01 deg on 10 / 5 / 2.5 mm) give no order either, and are called diverging.
+TEST(Richardson, GrowingDifferencesDivergeWithoutAnOrder) {
+  const RichardsonEstimate e = richardson({0.01, 0.005, 0.0025}, {36.08, 43.05, 52.01});
+  EXPECT_FALSE(e.order);
+  EXPECT_TRUE(e.diverging);
+  EXPECT_DOUBLE_EQ(e.value, 52.01);
+  EXPECT_NEAR(e.error_bar, 15.93, 1e-9);
 }
 
 // Resolutions that do not shrink by one ratio, or do not shrink, are refused.
