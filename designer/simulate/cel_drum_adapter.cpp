@@ -99,22 +99,22 @@ class CelDrumAdapter final : public CelSceneAdapter {
 
   std::string stop(const TimeSeries& series) const override {
     if (run().phase() != cel::ScenePhase::event) return {};
-    return angle_converged(angles(series), drum_angle_windows(drum_.speed))
-               ? "converged: the mean angle of the last two windows differs by less than 1 deg"
-               : "";
+    return converged_reason(angles(series), drum_angle_windows(drum_.speed));
   }
 
   void measure(const SceneRunResult& result, DesignRecord& record) override {
     add_throughput(record);
     const cel::CelSolver& s = run().solver();
     if (reached_event(record)) {
-      const SteadyAngle a = steady_angle(angles(result.series), drum_angle_windows(drum_.speed));
+      const AngleWindows windows = drum_angle_windows(drum_.speed);
+      const SteadyAngle a = steady_angle(angles(result.series), windows);
       if (a.found) {
-        record.results.emplace_back("dynamic_angle_of_repose",
-                                    Estimate{a.angle / kDegree, "deg", a.low / kDegree, a.high / kDegree,
-                                             model_label() + ": slope of the free surface, mean over the steady window "
-                                                             "(band: 2 SD of the sampled angle)",
-                                             Rung::L2, ""});
+        record.results.emplace_back(
+            "dynamic_angle_of_repose",
+            Estimate{a.angle / kDegree, "deg", a.low / kDegree, a.high / kDegree,
+                     model_label() + ": slope of the free surface, mean over the steady window (" +
+                         describe_interval(a, windows) + "; band: 2 SD of the sampled angle)",
+                     Rung::L2, ""});
         record.results.emplace_back("steady_window", Estimate{a.to - a.from, "s", a.from, a.to,
                                                               "rotation time averaged (from-to after the start)",
                                                               Rung::L2, ""});
@@ -132,8 +132,9 @@ class CelDrumAdapter final : public CelSceneAdapter {
         record.verdict.reasons.push_back(
             "the run ended within the spin-up: no steady angle or regime");
       }
-      if (result.end == RunEnd::duration && !request_.end_time)
-        record.verdict.reasons.push_back("the angle had not converged by the end of the run");
+      if (result.end == RunEnd::duration && !request_.end_time && a.found)
+        record.verdict.reasons.push_back("the angle had not converged by the end of the run (" +
+                                         describe_interval(a, windows) + ")");
     }
     record.results.emplace_back("mass_balance_error",
                                 Estimate{s.total_mass() / run().initial_mass() - 1.0, "", std::nullopt, std::nullopt,
@@ -174,9 +175,12 @@ class CelDrumAdapter final : public CelSceneAdapter {
         "shear from 0.2 kPa: 56 deg at e_c), above the DEM's 41-43 deg.",
         "The angle is the least-squares slope of the volume fraction 0.5 line, taken across "
         "the current gravity direction over the central half of the diameter; measured as on "
-        "every rung: the spin-up (0.15 of a turn, at least 0.5 s) left out, the mean over the last "
-        "two windows of 0.1 of a turn (at least 0.5 s each), converged when they agree within "
-        "1 deg, the band 2 SD of the sampled angle.",
+        "every rung: the spin-up (0.15 of a turn, at least 0.5 s) left out, then batches of 0.1 of "
+        "a turn (at least 0.5 s) of which MSER truncation drops the start-up transient (the first "
+        "avalanche overshoots), the mean over the rest with its 95 % interval from the batch "
+        "means, "
+        "converged when that is within +-1 deg over at least 5 batches; the band 2 SD of the "
+        "sampled angle.",
         "Regime from the bed state measured as on the particle rung, with the cells' mass for "
         "particle counts (fullsim/cel/drum_bed_state.hpp): in flight is material in cells clear "
         "of the bed by two cells, so a coarse grid sees less of it, and its bed avalanches as a "

@@ -49,9 +49,8 @@ DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
 }
 
 DrumAngleWatch angle_watch(const Drum& drum) {
-  const double period = drum.speed > 0.0 ? 2.0 * std::numbers::pi / drum.speed : 1e9;
-  return DrumAngleWatch(0.5 * drum.diameter, std::max(0.5, 0.15 * period), std::max(0.5, 0.1 * period),
-                        1.0 * kDegree);
+  const AngleWindows w = drum_angle_windows(drum.speed);
+  return DrumAngleWatch(0.5 * drum.diameter, w.spin_up, w.window, w.tolerance);
 }
 
 class DemDrumAdapter final : public SceneAdapter {
@@ -129,11 +128,7 @@ class DemDrumAdapter final : public SceneAdapter {
                                  s.kinetic_energy};
     };
     if (!request_.end_time)  // a given --time is run to its end
-      run.stop = [this](const TimeSeries&) {
-        return watch_.converged() ? std::string("converged: the mean angle of the last two windows differs by "
-                                                "less than 1 deg")
-                                  : std::string();
-      };
+      run.stop = [this](const TimeSeries&) { return watch_.converged_reason(); };
     const double rotation_start = scene_.rotation_start();
     run.save_scene = [this, rotation_start](Hdf5File& f) {
       f.set_attribute("/scene", "rotation_start", rotation_start);
@@ -148,10 +143,14 @@ class DemDrumAdapter final : public SceneAdapter {
     const bool measured = steady && steady->samples > 0;
     auto& results = record.results;
     if (measured && steady->angle != 0.0)
-      results.emplace_back("dynamic_angle_of_repose",
-                           Estimate{steady->angle / kDegree, "deg", steady->low / kDegree, steady->high / kDegree,
-                                    "DEM (" + law + "): mid-chord line of the free surface, mean over the steady "
-                                    "window (band: 2 SD of the sampled angle)", Rung::L3, ""});
+      results.emplace_back(
+          "dynamic_angle_of_repose",
+          Estimate{steady->angle / kDegree, "deg", steady->low / kDegree, steady->high / kDegree,
+                   "DEM (" + law +
+                       "): mid-chord line of the free surface, mean over the steady "
+                       "window (" +
+                       steady->interval + "; band: 2 SD of the sampled angle)",
+                   Rung::L3, ""});
     DrumRegimeCall regime;
     if (measured) regime = classify_drum_bed(steady->state);
     results.emplace_back(
@@ -173,7 +172,8 @@ class DemDrumAdapter final : public SceneAdapter {
       notes.push_back("the run ended within the spin-up (" + format_number(watch_.spin_up(), 3) + " s of rotation): no steady "
                       "angle or regime; run longer than " + format_number(watch_.spin_up() + 2 * watch_.window(), 3) + " s");
     if (run.end == RunEnd::duration && !request_.end_time)
-      notes.push_back("the angle had not converged within " + format_number(duration_, 3) + " s of rotation");
+      notes.push_back("the angle had not converged within " + format_number(duration_, 3) +
+                      " s of rotation" + (steady ? " (" + steady->interval + ")" : std::string()));
     if (fills() && scene_.trimmed() == 0)
       notes.push_back("the settled packing fell short of the fill line: the bed is below the asked fill");
     if (const std::string w = scene_.engine().spring_warning(); !w.empty()) notes.push_back(w);

@@ -95,7 +95,9 @@ CelScene make_drum_scene(const Drum& drum, double wall_friction_angle,
                         -10.0 * Eigen::Matrix3d::Identity()});
   s.event = {"drum started", {}, {}, std::numeric_limits<double>::infinity(), in_shell_frame};
   if (!in_shell_frame) s.event.walls_started = {0};
-  s.event_duration = 8.0;  // the surface swings with a period near 1 s: average several
+  // The seed's 10 s of rotation: the first avalanche's overshoot decays over about a turn (6 s
+  // at 10 rpm), then the surface swings with a period near 1 s.
+  s.event_duration = 10.0;
   char line[480];
   s.plan.push_back("scene: rotating drum, plane-strain section, " + grid_text(s.grid));
   std::snprintf(line, sizeof line,

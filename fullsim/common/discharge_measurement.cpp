@@ -6,41 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <utility>
 
 #include "models/core/gravity.hpp"
+#include "models/numerics/mser_truncation.hpp"
 
 namespace feedflow {
 namespace {
-
-// MSER truncation at both ends at once: the (front, back) counts to drop, each at most half
-// the batches, that minimise var(kept) / kept^2 (prefix sums keep it O(n^2)).
-std::pair<std::size_t, std::size_t> mser_truncation(const std::vector<double>& x,
-                                                    std::size_t min_kept) {
-  const std::size_t n = x.size();
-  std::vector<double> s1(n + 1, 0.0), s2(n + 1, 0.0);
-  const double shift = x.empty() ? 0.0 : x[n / 2];  // for round-off in the sums of squares
-  for (std::size_t k = 0; k < n; ++k) {
-    s1[k + 1] = s1[k] + (x[k] - shift);
-    s2[k + 1] = s2[k] + (x[k] - shift) * (x[k] - shift);
-  }
-  std::pair<std::size_t, std::size_t> best{0, 0};
-  double best_score = std::numeric_limits<double>::infinity();
-  for (std::size_t front = 0; front <= n / 2; ++front)
-    for (std::size_t back = 0; back <= n / 2 && front + back + std::max<std::size_t>(min_kept, 2) <= n; ++back) {
-      const std::size_t a = front, b = n - back;
-      const double m = static_cast<double>(b - a);
-      const double mean = (s1[b] - s1[a]) / m;
-      const double var = std::max(0.0, (s2[b] - s2[a]) / m - mean * mean) * m / (m - 1.0);
-      const double score = var / (m * m);
-      if (score < best_score) {
-        best_score = score;
-        best = {front, back};
-      }
-    }
-  return best;
-}
 
 // Linear interpolation of the sampled cumulative mass.
 double mass_at(const std::vector<double>& t, const std::vector<double>& m, double time) {

@@ -160,13 +160,13 @@ TEST_F(SimulateCel, HopperSectionReachesThePlanAndTheResults) {
 namespace {
 
 // The CEL drum reports its regime from the measured bed state, as the particle rung does: at
-// 50 rpm on 10 mm cells the bed cascades (the seed's label at 50 rpm; measured: its mean
-// surface bends by 38.5 % of R against the 25 % threshold), the time series carries the bed
+// 50 rpm on 10 mm cells over 3 s the bed cascades (the seed's label at 50 rpm; measured: its mean
+// surface bends by 34.3 % of R against the 25 % threshold), the time series carries the bed
 // state and the surface's profile, all finite.
 TEST_F(SimulateCel, DrumReportsItsRegimeFromTheBedState) {
   const auto r = run_feedflow(
       "simulate cases/rotating_drum_20rpm.toml --solver cel --set cel.cell_size=10mm "
-      "--set drum.speed=50rpm --out drum",
+      "--set drum.speed=50rpm --time 3s --out drum",
       dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(slurp(dir_ / "drum/results.json"));

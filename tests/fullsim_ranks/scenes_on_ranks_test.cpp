@@ -100,7 +100,7 @@ DrumRun fill_and_turn(const DemRanks& ranks) {
   run.fill = drum.fill(log);
   drum.start_rotation(log);
   DrumAngleWatch watch(0.0725, 0.72, 0.3, 1.5 * kDeg);  // spin-up 0.12 of a turn
-  while (!watch.converged() && watch.samples().size() < 200) {
+  while (!watch.converged() && watch.samples().size() < 100) {  // at most 2 s of rotation
     drum.engine().advance_to(drum.engine().time() + 0.02);
     watch.add(drum.sample());
   }

@@ -18,6 +18,10 @@ std::vector<AngleSample> DrumAngleWatch::angles() const {
 
 bool DrumAngleWatch::converged() const { return angle_converged(angles(), windows_); }
 
+std::string DrumAngleWatch::converged_reason() const {
+  return feedflow::converged_reason(angles(), windows_);
+}
+
 std::optional<DrumSteadyResult> DrumAngleWatch::steady() const {
   if (samples_.empty()) return std::nullopt;
   const SteadyAngle a = steady_angle(angles(), windows_);
@@ -41,6 +45,7 @@ std::optional<DrumSteadyResult> DrumAngleWatch::steady() const {
   r.state.shell_speed_ratio /= n;
   r.state.particles /= n;
   const std::size_t valid = a.valid;
+  r.interval = describe_interval(a, windows_);
   if (a.found) {
     r.angle = a.angle;
     r.angle_sd = a.sd;

@@ -1,7 +1,8 @@
 #pragma once
 // When a DEM drum run has converged, and its steady result. Samples are taken at a fixed
 // interval after the shell starts; the angle, its band and the convergence are measured as on
-// every rung (fullsim/common/steady_angle.hpp: spin-up left out, two windows, mean with 2 SD);
+// every rung (fullsim/common/steady_angle.hpp: spin-up left out, the start-up transient's
+// batches dropped, the mean with its interval and 2 SD);
 // beside them the bed state is averaged over the same windows, with the angle's peak-to-peak
 // swing; the surface bulge is that of
 // the time-averaged surface profile (column by column), so the snapshot noise of a coarse bed
@@ -23,7 +24,8 @@ struct DrumSteadyResult {
   double low = 0.0;          // mean - 2 SD [rad]
   double high = 0.0;         // mean + 2 SD [rad]
   DrumBedState state;        // averaged, with the angle's peak-to-peak swing
-  std::size_t samples = 0;   // in the two windows
+  std::size_t samples = 0;   // in the steady window
+  std::string interval;      // the mean's confidence interval, in words (describe_interval)
   std::vector<SurfacePoint> mean_surface;  // time-averaged surface profile [m]
   double from = 0.0;         // [s] window start (time since the shell started)
   double to = 0.0;           // [s]
@@ -36,8 +38,9 @@ class DrumAngleWatch {
 
   void add(const DrumSample& sample) { samples_.push_back(sample); }
   bool converged() const;
-  // The result over the last two windows after the spin-up (whatever has been sampled there if
-  // the run ends before converging); empty without samples after the spin-up.
+  std::string converged_reason() const;  // "" until converged()
+  // The result over the steady window (whatever has been sampled after the spin-up if the run
+  // ends before converging); empty without samples after the spin-up.
   std::optional<DrumSteadyResult> steady() const;
   const std::vector<DrumSample>& samples() const { return samples_; }
   double spin_up() const { return windows_.spin_up; }

@@ -217,7 +217,7 @@ DrumSteadyResult run_twin(double rpm) {
   drum.start_rotation(log);
   const double period = 60.0 / rpm;
   DrumAngleWatch watch(0.0725, std::max(0.3, 0.12 * period), 0.3, 1.5 * kDegree);
-  while (!watch.converged() && watch.samples().size() < 400) {
+  while (!watch.converged() && watch.samples().size() < 150) {  // at most 3 s of rotation
     drum.engine().advance_to(drum.engine().time() + 0.02);
     watch.add(drum.sample());
   }
