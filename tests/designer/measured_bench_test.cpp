@@ -31,11 +31,11 @@ TEST(MeasuredBench, ShipsThePilotHoppersMeasuredReference) {
 // Within 10 % and within 5 % the cheapest measured answer is a reduced row calibrated against
 // the CEL rung (Rose-Tanaka, +6.6 %, and Brown, +4.4 %, milliseconds; Beverloo is 18 % off), not a
 // CEL run (the 10 mm run is 4.6 % off and its second-order remap 0.5 %, but they take seconds);
-// the flow-pattern label is answered right by the reduced rung; the drum at 50 rpm converged
-// (45.7 +- 2.3 deg, order 1.96), and within 10 % a CEL run answers (the 5 mm level, 4.1 %), not
-// the reduced model (it has no angle there); the drum at 10 rpm (no observed order: 10, 5, 2.5 mm
-// read 51.7, 46.8, 46.9 deg, a 10.3 % error bar) judges no tolerance of 10 %, nor the drum at
-// 20 rpm (22 %) one of 5 %.
+// the flow-pattern label is answered right by the reduced rung. The drum's CEL levels, measured
+// after the start-up transient (20, 10, 5 mm), leave error bars of 16 % (10 rpm), 14 % (20 rpm)
+// and 28 % (50 rpm: 65.1 +- 18.3 deg, order 0.94): none judges a tolerance of 10 %; within 30 %
+// the drum at 50 rpm is answered by a CEL run (the 5 mm level, 50.5 deg, 22.5 % off), not the
+// reduced model (it has no angle in the cascading regime).
 TEST(MeasuredBench, CheapestWithinATolerance) {
   const MeasuredBench& table = measured_bench();
   const MeasuredQuestion& rate = *table.find("hopper_discharge_rate_60mm");
@@ -55,23 +55,21 @@ TEST(MeasuredBench, CheapestWithinATolerance) {
   const MeasuredAnswer* pattern = cheapest_within(*table.find("hopper_flow_pattern_60mm"), 0.0);
   ASSERT_NE(pattern, nullptr);
   EXPECT_EQ(pattern->rung, "L0");
+  for (const char* id : {"drum_angle_10rpm", "drum_angle_20rpm", "drum_angle_50rpm"}) {
+    EXPECT_FALSE(reference_resolves(*table.find(id), 0.10)) << id;
+    EXPECT_EQ(cheapest_within(*table.find(id), 0.10), nullptr) << id;
+  }
   const MeasuredQuestion& drum = *table.find("drum_angle_50rpm");
-  EXPECT_TRUE(reference_resolves(drum, 0.10));
-  const MeasuredAnswer* drum_ten = cheapest_within(drum, 0.10);
-  ASSERT_NE(drum_ten, nullptr);
-  EXPECT_EQ(drum_ten->rung, "L2") << drum_ten->setting;
-  EXPECT_LT(*drum_ten->error, 0.10);
+  EXPECT_TRUE(reference_resolves(drum, 0.30));
+  const MeasuredAnswer* drum_thirty = cheapest_within(drum, 0.30);
+  ASSERT_NE(drum_thirty, nullptr);
+  EXPECT_EQ(drum_thirty->rung, "L2") << drum_thirty->setting;
+  EXPECT_LT(*drum_thirty->error, 0.30);
   for (const auto& a : drum.answers) {  // and nothing within the tolerance is cheaper
-    if (a.error && *a.error < 0.10 && a.wall_seconds) {
-      EXPECT_GE(*a.wall_seconds, *drum_ten->wall_seconds) << a.setting;
+    if (a.error && *a.error < 0.30 && a.wall_seconds) {
+      EXPECT_GE(*a.wall_seconds, *drum_thirty->wall_seconds) << a.setting;
     }
   }
-  const MeasuredQuestion& drum10 = *table.find("drum_angle_10rpm");
-  EXPECT_FALSE(reference_resolves(drum10, 0.10));
-  EXPECT_EQ(cheapest_within(drum10, 0.10), nullptr);
-  const MeasuredQuestion& drum20 = *table.find("drum_angle_20rpm");
-  EXPECT_FALSE(reference_resolves(drum20, 0.05));
-  EXPECT_EQ(cheapest_within(drum20, 0.05), nullptr);
 }
 
 // A table whose pilot hopper rate converged with order `order` (10, 5, 2.5 mm).
