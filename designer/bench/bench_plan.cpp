@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "designer/design/model_choices.hpp"
+#include "designer/simulate/drum_angle_interval.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
@@ -159,6 +160,9 @@ std::vector<BenchQuestion> seed_bench_questions() {
           p.label_rule = BenchPoint::LabelRule{h.outlet, "arched", "flowing"};
         }
     add_dem_points(q, h.quantity, "12mm");  // four diameters against the default one layer
+    if (!h.categorical)  // the rate's band is the 95 % interval of its batch means
+      for (auto& p : q.points)
+        if (p.solver) p.interval_key = p.quantity;
     questions.push_back(std::move(q));
   }
 
@@ -190,6 +194,9 @@ std::vector<BenchQuestion> seed_bench_questions() {
       add_design_point(q, quantity, "L0");
       add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});
       add_dem_points(q, quantity, "18mm");  // the default is the seed's whole 3D drum
+      if (!regime)
+        for (auto& p : q.points)
+          if (p.solver) p.interval_key = kAngleIntervalKey;
       questions.push_back(std::move(q));
     }
   }

@@ -41,6 +41,10 @@ struct BenchPoint {
   // The results key that reads "yes" when the run ended at rest (a deposit's thickness); a run
   // that ended still flowing answers an upper bound, kept out of the reference and the ranking.
   std::string rest_key;
+  // The results key whose value is the half-width of the answer's statistical interval (the
+  // 95 % interval of a time average's mean: the drum's angle); the point's own quantity: its
+  // band is that interval (the hopper's rate); empty: none (a deposit, a label).
+  std::string interval_key;
   std::string resolution;            // what a CEL point resolves: "3 cells across the half outlet"
 };
 

@@ -174,6 +174,11 @@ std::filesystem::path interrupted_checkpoint(const std::filesystem::path& folder
   return folder / "interrupted.h5";
 }
 
+std::string continue_after_interrupt(const std::filesystem::path& runs) {
+  return "feedflow: interrupted; run the same command again to continue (runs made are kept in " +
+         runs.string() + ", a run cut short continues from its checkpoint)\n";
+}
+
 std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folder,
                                               const std::string& invocation,
                                               const std::string& inputs) {

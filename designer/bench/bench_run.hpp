@@ -71,6 +71,9 @@ std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folde
                                               const std::string& inputs);
 // Where a run cut short keeps its checkpoint in its folder.
 std::filesystem::path interrupted_checkpoint(const std::filesystem::path& folder);
+// What a command cut short tells its user: its runs are kept in `runs` and the same command
+// continues them.
+std::string continue_after_interrupt(const std::filesystem::path& runs);
 
 // The point's run read back from `folder`, or made and saved; `made` says which. A simulation
 // cut short is saved as interrupted with its checkpoint, and the next call continues it from

@@ -47,6 +47,10 @@ BenchAnswer answer_of(const BenchPoint& p, const std::map<std::string, BenchRun>
     a.label = e["value"].get<std::string>();
   }
   a.unit = e.value("unit", "");
+  if (p.interval_key == p.quantity && a.low && a.high)
+    a.interval = 0.5 * (*a.high - *a.low);
+  else if (!p.interval_key.empty() && results.contains(p.interval_key))
+    a.interval = number_at(results[p.interval_key], "value");
   if (!p.rest_key.empty() && results.contains(p.rest_key)) {
     const auto& rest = results[p.rest_key].at("value");
     a.at_rest = rest.is_string() && rest.get<std::string>().rfind("yes", 0) == 0;
@@ -58,6 +62,16 @@ BenchAnswer answer_of(const BenchPoint& p, const std::map<std::string, BenchRun>
 bool settled(const BenchAnswer& a) { return a.at_rest.value_or(true); }
 
 std::string millimetres(double metres) { return format_number(metres * 1e3, 3); }
+
+// A CEL estimate's error bar with the finest level's statistical interval added in quadrature
+// (a discretisation error and the time average's noise are independent; levels closer than
+// their noise make a Richardson bar that is the noise's, not the grid's).
+void add_finest_interval(BenchReference& r, const BenchAnswer& finest) {
+  if (!finest.interval) return;
+  r.error_bar = std::hypot(r.error_bar.value_or(0.0), *finest.interval);
+  r.source += "; error bar with the finest level's 95 % interval +-" +
+              format_number(*finest.interval, 2) + " " + finest.unit + " in quadrature";
+}
 
 // The CEL refinement series' estimate: Richardson on the finest three levels, two levels with
 // the donor-cell remap's formal order 1, or the one level there is.
@@ -97,8 +111,9 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
                                 (e.asymptotic ? "" : ", outside the asymptotic range")
                   : e.diverging
                       ? std::string("no observed order: diverging, each refinement moves it more")
-                      : std::string("no observed order: not converging monotonically")) +
-                 ")";
+                      : std::string("no observed order: not converging monotonically"));
+      add_finest_interval(r, *c);
+      r.source += ")";
       return r;
     } catch (const std::invalid_argument&) {  // not one ratio: the two finest
     }
@@ -109,11 +124,14 @@ std::optional<BenchReference> cel_reference(const std::vector<BenchAnswer>& answ
                                                        {*b->value, *c->value}, q.two_level_order.value_or(1.0));
     r.value = e.value;
     r.error_bar = e.error_bar;
-    r.source = "CEL two levels (" + millimetres(*b->point->cell_size) + ", " + millimetres(*c->point->cell_size) +
-               " mm; " +
-               (q.two_level_order ? "order " + format_number(*q.two_level_order, 3) + " " + q.two_level_order_source
+    r.source = "CEL two levels (" + millimetres(*b->point->cell_size) + ", " +
+               millimetres(*c->point->cell_size) + " mm; " +
+               (q.two_level_order ? "order " + format_number(*q.two_level_order, 3) + " " +
+                                        q.two_level_order_source
                                   : std::string("formal order 1")) +
-               ", safety 3)";
+               ", safety 3";
+    add_finest_interval(r, *c);
+    r.source += ")";
     return r;
   }
   r.value = levels.back()->value;
@@ -136,7 +154,13 @@ std::optional<BenchReference> dem_reference(const std::vector<BenchAnswer>& answ
     }
     if (!categorical && a.value) {
       r.value = a.value;
-      if (a.low && a.high) r.error_bar = 0.5 * (*a.high - *a.low);
+      if (a.interval) {
+        r.error_bar = a.interval;
+        r.source += " (error bar: its 95 % interval)";
+      } else if (a.low && a.high) {
+        r.error_bar = 0.5 * (*a.high - *a.low);
+        r.source += " (error bar: half its band)";
+      }
       return r;
     }
   }
@@ -234,6 +258,7 @@ nlohmann::ordered_json bench_json(const std::vector<BenchQuestionTable>& tables)
         ja["value"] = *a.value;
         ja["low"] = optional_number(a.low);
         ja["high"] = optional_number(a.high);
+        if (a.interval) ja["interval"] = *a.interval;
         ja["unit"] = a.unit;
       } else {
         ja["label"] = a.label;
@@ -275,7 +300,9 @@ std::string csv_number(const std::optional<double>& v) {
 
 std::string bench_csv(const std::vector<BenchQuestionTable>& tables) {
   std::string s =
-      "question,rung,setting,resolution,in_reference,quantity,value,low,high,unit,reference,reference_error_bar,"
+      "question,rung,setting,resolution,in_reference,quantity,value,low,high,interval,unit,"
+      "reference,"
+      "reference_error_bar,"
       "error,band_holds_reference,pareto_front,wall_time_s,cores,status,invocation\n";
   for (const auto& t : tables)
     for (const auto& a : t.answers) {
@@ -290,6 +317,7 @@ std::string bench_csv(const std::vector<BenchQuestionTable>& tables) {
           a.value ? csv_number(a.value) : csv_field(a.label),
           csv_number(a.low),
           csv_number(a.high),
+          csv_number(a.interval),
           csv_field(a.unit),
           q.categorical ? csv_field(t.reference.label) : csv_number(t.reference.value),
           csv_number(t.reference.error_bar),

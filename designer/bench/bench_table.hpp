@@ -4,7 +4,8 @@
 // and each point's answer with its wall time, cores, error against the reference, whether its
 // band holds the reference, and whether it is on the Pareto front of wall time against error.
 // Numbers err relatively (|answer - reference| / |reference|); labels (arching, regime) are
-// right (0) or wrong (1).
+// right (0) or wrong (1). A time-averaged answer carries its statistical interval: a CEL
+// reference's error bar adds the finest level's in quadrature, a DEM reference's is its own.
 #include <map>
 #include <optional>
 #include <string>
@@ -33,6 +34,8 @@ struct BenchAnswer {
   const BenchPoint* point = nullptr;
   const BenchRun* run = nullptr;     // none: not run (not in this bench's selection)
   std::optional<double> value, low, high;
+  std::optional<double>
+      interval;  // half-width of the value's statistical 95 % interval (a time average)
   std::string label;                 // a label answer, or why there is no answer
   std::string unit;
   std::optional<double> error;       // relative (numbers) or 0/1 (labels); none without reference

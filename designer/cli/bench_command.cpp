@@ -308,9 +308,7 @@ int run_bench(const BenchArguments& args) {
     std::cout << '\n';
   }
   if (runs.interrupted) {
-    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are "
-                 "kept, a run cut "
-                 "short continues from its checkpoint)\n";
+    std::cerr << continue_after_interrupt(out / "runs");
     return kExitInterrupted;
   }
   return kExitOk;

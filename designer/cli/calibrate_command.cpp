@@ -175,9 +175,7 @@ int run_calibrate(const CalibrateArguments& args) {
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
   if (!make_runs(args, out / "runs", o)) {
-    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are "
-                 "kept, a run cut "
-                 "short continues from its checkpoint)\n";
+    std::cerr << continue_after_interrupt(out / "runs");
     return kExitInterrupted;
   }
   for (std::size_t i = 0; i < o.points.size(); ++i) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "designer/bench/bench_run.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
@@ -60,9 +61,7 @@ int run_design(const DesignArguments& args) {
                              args.tolerance, args.width_tolerance,
                              verify_runs,    args.options.human_output() ? &std::cout : nullptr};
   if (!verify_design(verify, c, record)) {
-    std::cerr << "feedflow: interrupted; run the same command again to continue (runs made are "
-                 "kept in "
-              << verify_runs.string() << ", a run cut short continues from its checkpoint)\n";
+    std::cerr << continue_after_interrupt(verify_runs);
     return kExitInterrupted;
   }
   record.command_line = invocation();

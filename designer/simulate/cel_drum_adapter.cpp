@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "designer/simulate/cel_scene_adapter.hpp"
+#include "designer/simulate/drum_angle_interval.hpp"
 #include "fullsim/cel/drum_bed_state.hpp"
 #include "fullsim/cel/drum_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
@@ -115,6 +116,7 @@ class CelDrumAdapter final : public CelSceneAdapter {
                      model_label() + ": slope of the free surface, mean over the steady window (" +
                          describe_interval(a, windows) + "; band: 2 SD of the sampled angle)",
                      Rung::L2, ""});
+        add_angle_interval(record.results, interval_half_width(a), Rung::L2);
         record.results.emplace_back("steady_window", Estimate{a.to - a.from, "s", a.from, a.to,
                                                               "rotation time averaged (from-to after the start)",
                                                               Rung::L2, ""});

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "designer/simulate/dem_case_settings.hpp"
+#include "designer/simulate/drum_angle_interval.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
 #include "fullsim/dem/scene/drum_angle_watch.hpp"
 #include "fullsim/dem/scene/drum_scene.hpp"
@@ -142,7 +143,7 @@ class DemDrumAdapter final : public SceneAdapter {
     const std::string law = contact_law_name(scene_.engine().effective_law());
     const bool measured = steady && steady->samples > 0;
     auto& results = record.results;
-    if (measured && steady->angle != 0.0)
+    if (measured && steady->angle != 0.0) {
       results.emplace_back(
           "dynamic_angle_of_repose",
           Estimate{steady->angle / kDegree, "deg", steady->low / kDegree, steady->high / kDegree,
@@ -151,6 +152,8 @@ class DemDrumAdapter final : public SceneAdapter {
                        "window (" +
                        steady->interval + "; band: 2 SD of the sampled angle)",
                    Rung::L3, ""});
+      add_angle_interval(results, steady->interval_half_width, Rung::L3);
+    }
     DrumRegimeCall regime;
     if (measured) regime = classify_drum_bed(steady->state);
     results.emplace_back(

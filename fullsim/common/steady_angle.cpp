@@ -111,12 +111,18 @@ SteadyAngle steady_angle(const std::vector<AngleSample>& samples, const AngleWin
   return r;
 }
 
+std::optional<double> interval_half_width(const SteadyAngle& a) {
+  if (a.batches < 2) return std::nullopt;
+  return 0.5 * (a.ci_high - a.ci_low);
+}
+
 std::string describe_interval(const SteadyAngle& a, const AngleWindows& w) {
-  if (a.batches < 2) return "no interval of the mean (fewer than two batches after the spin-up)";
+  const auto half = interval_half_width(a);
+  if (!half) return "no interval of the mean (fewer than two batches after the spin-up)";
   return format_number(100.0 * w.confidence, 3) + " % interval of the mean +-" +
-         format_quantity(0.5 * (a.ci_high - a.ci_low), "deg", 2) + " over " +
-         std::to_string(a.batches) + " batches of " + format_quantity(w.window, "s", 2) + ", " +
-         std::to_string(a.dropped) + " of the start-up transient dropped";
+         format_quantity(*half, "deg", 2) + " over " + std::to_string(a.batches) + " batches of " +
+         format_quantity(w.window, "s", 2) + ", " + std::to_string(a.dropped) +
+         " of the start-up transient dropped";
 }
 
 std::string converged_reason(const std::vector<AngleSample>& samples, const AngleWindows& w) {

@@ -9,6 +9,7 @@
 // one snapshot may lie from the mean). The run has converged when at least `min_batches` are
 // kept and the interval's half-width is within `tolerance`.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,8 @@ SteadyAngle steady_angle(const std::vector<AngleSample>& samples, const AngleWin
 // For the results and the run's end: "95 % interval of the mean +-1.6 deg over 10 batches, 6 of
 // the transient dropped", and why a run stopped: "converged: ...".
 std::string describe_interval(const SteadyAngle& a, const AngleWindows& w);
+// The half-width of the mean's confidence interval [rad]; none with fewer than two batches.
+std::optional<double> interval_half_width(const SteadyAngle& a);
 std::string converged_reason(const std::vector<AngleSample>& samples, const AngleWindows& w);
 
 }  // namespace feedflow

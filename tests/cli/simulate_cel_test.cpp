@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "models/units/quantity_format.hpp"
 #include "run_feedflow.hpp"
 
 namespace fs = std::filesystem;
@@ -161,8 +162,8 @@ namespace {
 
 // The CEL drum reports its regime from the measured bed state, as the particle rung does: at
 // 50 rpm on 10 mm cells over 3 s the bed cascades (the seed's label at 50 rpm; measured: its mean
-// surface bends by 34.3 % of R against the 25 % threshold), the time series carries the bed
-// state and the surface's profile, all finite.
+// surface bends by 34.3 % of R against the 25 % threshold), the angle's interval is a result, and
+// the time series carries the bed state and the surface's profile, all finite.
 TEST_F(SimulateCel, DrumReportsItsRegimeFromTheBedState) {
   const auto r = run_feedflow(
       "simulate cases/rotating_drum_20rpm.toml --solver cel --set cel.cell_size=10mm "
@@ -174,6 +175,17 @@ TEST_F(SimulateCel, DrumReportsItsRegimeFromTheBedState) {
   EXPECT_EQ(regime.at("value"), "cascading");
   EXPECT_EQ(regime.at("rung"), "L2");
   EXPECT_NE(regime.at("model").get<std::string>().find("measured bed state"), std::string::npos);
+  // the angle's mean carries its 95 % interval as a result of its own (measured: +-7.5 deg over
+  // 4 batches), the one its model names, narrower than the 2 SD band of the sampled angle
+  const auto& angle = j.at("results").at("dynamic_angle_of_repose");
+  const auto& interval = j.at("results").at("dynamic_angle_of_repose_interval");
+  EXPECT_EQ(interval.at("unit"), "deg");
+  EXPECT_GT(interval.at("value").get<double>(), 0.0);
+  EXPECT_LT(interval.at("value").get<double>(),
+            0.5 * (angle.at("high").get<double>() - angle.at("low").get<double>()));
+  EXPECT_NE(angle.at("model").get<std::string>().find(
+                "+-" + feedflow::format_number(interval.at("value").get<double>(), 2) + " deg"),
+            std::string::npos);
   const std::string series = slurp(dir_ / "drum/timeseries.csv");
   EXPECT_NE(series.find("solid_body_fraction"), std::string::npos);
   EXPECT_NE(series.find("surface_height_at_chord_+0.8 [m]"), std::string::npos);

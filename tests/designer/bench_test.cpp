@@ -16,6 +16,7 @@
 #include "designer/bench/bench_table.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_text.hpp"
+#include "models/numerics/richardson.hpp"
 #include "models/os/interrupt_request.hpp"
 
 namespace feedflow {
@@ -177,6 +178,57 @@ TEST(BenchTable, DivergingLevelsGiveTheFinestRunWithTheSpread) {
   EXPECT_FALSE(t.answers[3].error);
   EXPECT_FALSE(t.answers[3].pareto);
   EXPECT_NEAR(*t.answers[0].error, (45.7 - 39.1) / 45.7, 1e-12);
+}
+
+// A time average's statistical interval enters the references: the drum's angle on a first-order
+// series 40 + 200 h has Richardson's bar widened by the finest level's 95 % interval in
+// quadrature; the DEM reference's error bar is its interval (0.8 deg), not half its 2 SD band
+// (10 deg), so a 3.5 deg gap is a disagreement; the hopper's rate, whose band is its interval,
+// takes the band's half-width.
+TEST(BenchTable, TheFinestLevelsIntervalWidensTheReference) {
+  BenchQuestion q{"angle", "angle", "cases/rotating_drum_20rpm.toml", {}, false, {}, {}, {}};
+  q.points = {point("CEL 20", "L2", ReferenceRole::cel_refinement, 0.02),
+              point("CEL 10", "L2", ReferenceRole::cel_refinement, 0.01),
+              point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005),
+              point("DEM seed law", "L3", ReferenceRole::dem_reference)};
+  for (auto& p : q.points) {
+    p.quantity = "dynamic_angle_of_repose";
+    p.interval_key = "dynamic_angle_of_repose_interval";
+  }
+  std::map<std::string, BenchRun> runs;
+  const auto run = [](double angle, double interval) {
+    BenchRun r = number_run("dynamic_angle_of_repose", angle, angle - 10.0, angle + 10.0, 1.0);
+    r.results["dynamic_angle_of_repose"]["unit"] = "deg";
+    r.results["dynamic_angle_of_repose_interval"] = {{"value", interval}, {"unit", "deg"}};
+    return r;
+  };
+  runs[point_id(q.points[0])] = run(44.0, 3.0);
+  runs[point_id(q.points[1])] = run(42.0, 2.0);
+  runs[point_id(q.points[2])] = run(41.0, 1.5);
+  runs[point_id(q.points[3])] = run(43.5, 0.8);
+  const BenchQuestionTable t = tabulate(q, runs);
+  ASSERT_TRUE(t.reference.value && t.reference.error_bar && t.reference.order);
+  EXPECT_NEAR(*t.reference.value, 40.0, 1e-9);
+  const RichardsonEstimate grid = richardson({0.02, 0.01, 0.005}, {44.0, 42.0, 41.0});
+  EXPECT_NEAR(*t.reference.error_bar, std::hypot(grid.error_bar, 1.5), 1e-12);
+  EXPECT_NE(t.reference.source.find("95 % interval +-1.5 deg in quadrature"), std::string::npos)
+      << t.reference.source;
+  EXPECT_DOUBLE_EQ(*t.answers[2].interval, 1.5);
+  EXPECT_LT(*t.reference.error_bar + 0.8, 3.5);   // so DEM 43.5 disagrees ...
+  EXPECT_GT(*t.reference.error_bar + 10.0, 3.5);  // ... where half its band would have agreed
+  EXPECT_NE(t.reference.agreement.find("CEL and DEM disagree"), std::string::npos)
+      << t.reference.agreement;
+  EXPECT_NE(t.reference.agreement.find("DEM 43.5 +- 0.8 deg"), std::string::npos)
+      << t.reference.agreement;
+  EXPECT_NEAR(bench_json({t})[0]["answers"][3]["interval"].get<double>(), 0.8, 1e-12);
+
+  // the rate: its band is its interval
+  BenchPoint rate = point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005);
+  rate.interval_key = rate.quantity;
+  BenchQuestion r{"rate", "rate", "cases/pilot_hopper.toml", {}, false, {rate}, {}, {}};
+  const BenchQuestionTable tr =
+      tabulate(r, {{point_id(rate), number_run("mass_flow_rate", 5.4, 5.3, 5.6, 1.0)}});
+  EXPECT_NEAR(*tr.answers[0].interval, 0.15, 1e-12);
 }
 
 // Labels are right (0) or wrong (1) against the finest CEL level; a point not run, one that

@@ -46,6 +46,7 @@ std::optional<DrumSteadyResult> DrumAngleWatch::steady() const {
   r.state.particles /= n;
   const std::size_t valid = a.valid;
   r.interval = describe_interval(a, windows_);
+  r.interval_half_width = interval_half_width(a);
   if (a.found) {
     r.angle = a.angle;
     r.angle_sd = a.sd;

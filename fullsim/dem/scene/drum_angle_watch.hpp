@@ -26,6 +26,7 @@ struct DrumSteadyResult {
   DrumBedState state;        // averaged, with the angle's peak-to-peak swing
   std::size_t samples = 0;   // in the steady window
   std::string interval;      // the mean's confidence interval, in words (describe_interval)
+  std::optional<double> interval_half_width;  // [rad] of that interval; none: < 2 batches
   std::vector<SurfacePoint> mean_surface;  // time-averaged surface profile [m]
   double from = 0.0;         // [s] window start (time since the shell started)
   double to = 0.0;           // [s]
