@@ -356,7 +356,23 @@ std::optional<Chart> error_against_time_chart(const BenchQuestionTable& t) {
     if (a.pareto) front.emplace_back(a.run->wall_seconds, 100.0 * *a.error);
   }
   if (by_rung.empty()) return std::nullopt;
-  for (auto& [rung, s] : by_rung) chart.series.push_back(std::move(s));
+  double fastest = INFINITY, slowest = 0.0;
+  for (auto& [rung, s] : by_rung) {
+    for (double x : s.x) {
+      fastest = std::min(fastest, x);
+      slowest = std::max(slowest, x);
+    }
+    chart.series.push_back(std::move(s));
+  }
+  // The reference's own error bar: an error below it is within the reference's uncertainty.
+  if (t.reference.error_bar && *t.reference.error_bar > 0.0 && *t.reference.value != 0.0) {
+    const double bar = 100.0 * *t.reference.error_bar / std::abs(*t.reference.value);
+    chart.series.push_back({"reference's error bar (errors below it unresolved)",
+                            SeriesStyle::line,
+                            {fastest, slowest},
+                            {bar, bar},
+                            {}});
+  }
   std::sort(front.begin(), front.end());
   ChartSeries line{"Pareto front", SeriesStyle::dashed, {}, {}, {}};
   for (const auto& [x, y] : front) {

@@ -23,6 +23,7 @@
 #include "designer/cli/report_files.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
+#include "models/core/version.hpp"
 #include "models/os/interrupt_request.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_parser.hpp"
@@ -84,6 +85,7 @@ bool wanted_point(const BenchArguments& args, double finest, const BenchPoint& p
 // The report's record: each question's reference as a result, its chart, and the notes.
 DesignRecord bench_record(const std::vector<BenchQuestionTable>& tables, bool quick, double wall_seconds) {
   DesignRecord r;
+  r.feedflow_version = kVersion;
   r.case_name = "bench";
   r.description = std::string("feedflow bench") + (quick ? " --quick" : "") + ": run time against error, " +
                   std::to_string(tables.size()) + " design questions of the seed's scenes";

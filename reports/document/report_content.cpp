@@ -18,6 +18,22 @@ std::string upper(std::string s) {
 
 bool is_material_key(const std::string& key) { return key.rfind("material.", 0) == 0; }
 
+void add_verdict(ReportContent& c, const DesignRecord& r) {
+  c.blocks.push_back(ReportHeading{"Verdict"});
+  c.blocks.push_back(
+      ReportParagraph{upper(to_string(r.verdict.status)), tone_of(r.verdict.status), true});
+  if (const auto margins = margin_table(r.verdict); !margins.empty()) {
+    ReportTable t{{"Check", "Requirement", "Achieved (band)", "Margin", "Status"},
+                  {},
+                  {0.24, 0.14, 0.34, 0.1, 0.18}};
+    for (const auto& m : margins)
+      t.rows.push_back({m.check, m.requirement, m.achieved, m.margin,
+                        std::string(to_string(m.status)) + (m.governing ? " (governs)" : "")});
+    c.blocks.push_back(std::move(t));
+  }
+  c.blocks.push_back(ReportBullets{r.verdict.reasons});
+}
+
 void add_results(ReportContent& c, const DesignRecord& r) {
   c.blocks.push_back(ReportHeading{"Results"});
   if (r.results.empty()) {
@@ -31,15 +47,23 @@ void add_results(ReportContent& c, const DesignRecord& r) {
   c.blocks.push_back(std::move(t));
 }
 
+// Whether the record is of one case (a design check, a simulation, a sweep): a bench over the
+// seed's cases has no equipment, verdict, inputs or material of its own.
+bool of_a_case(const DesignRecord& r) { return !r.case_file.empty(); }
+
 void add_inputs(ReportContent& c, const DesignRecord& r) {
-  c.blocks.push_back(ReportHeading{"Inputs"});
   ReportTable t{{"Input", "Value", "Key"}, {}, {2.0, 1.6, 2.4}};
   for (const auto& in : r.inputs)
     if (!is_material_key(in.key)) t.rows.push_back({quantity_label(in.key), in.display, in.key});
+  if (t.rows.empty() && !of_a_case(r)) return;
+  c.blocks.push_back(ReportHeading{"Inputs"});
   c.blocks.push_back(std::move(t));
 }
 
 void add_material_sheet(ReportContent& c, const DesignRecord& r) {
+  if (!of_a_case(r) && std::none_of(r.inputs.begin(), r.inputs.end(),
+                                    [](const InputValue& in) { return is_material_key(in.key); }))
+    return;
   c.blocks.push_back(ReportHeading{"Material data sheet"});
   std::string name, origin;
   ReportTable t{{"Parameter", "Value", "Source"}, {}, {2.3, 1.2, 4.3}};
@@ -60,7 +84,7 @@ void add_provenance(ReportContent& c, const DesignRecord& r, const std::string& 
   c.blocks.push_back(ReportHeading{"Provenance"});
   std::vector<std::string> items;
   items.push_back("feedflow " + r.feedflow_version + ", report generated " + generated);
-  items.push_back("case file: " + r.case_file);
+  if (of_a_case(r)) items.push_back("case file: " + r.case_file);
   if (!r.command_line.empty()) items.push_back("command: " + r.command_line);
   items.push_back("run time: " + format_quantity(r.wall_seconds, r.wall_seconds < 1 ? "ms" : "s", 3));
   std::set<std::string> models;
@@ -84,26 +108,28 @@ Tone tone_of(VerdictStatus status) {
 ReportContent design_report_content(const DesignRecord& r, const std::vector<ReportImage>& snapshots,
                                     const std::string& generated) {
   ReportContent c;
-  c.title = "Design report: " + r.case_name;
-  c.header = "feedflow " + r.feedflow_version + "  |  " + r.case_name + " (" + to_string(r.kind) + ")";
+  const bool one_case = of_a_case(r);
+  c.title = (one_case ? "Design report: " : "Report: ") + r.case_name;
+  c.header = "feedflow " + r.feedflow_version + "  |  " + r.case_name +
+             (one_case ? " (" + std::string(to_string(r.kind)) + ")" : std::string());
   c.blocks.push_back(ReportHeading{c.title, 0});
   if (!r.description.empty()) c.blocks.push_back(ReportParagraph{r.description});
-  c.blocks.push_back(ReportParagraph{std::string("Equipment: ") + to_string(r.kind) +
-                                         ".  Case file: " + r.case_file + ".  Generated " + generated + ".",
+  c.blocks.push_back(ReportParagraph{(one_case ? std::string("Equipment: ") + to_string(r.kind) +
+                                                     ".  Case file: " + r.case_file + ".  "
+                                               : std::string()) +
+                                         "Generated " + generated + ".",
                                      Tone::muted});
 
-  c.blocks.push_back(ReportHeading{"Verdict"});
-  c.blocks.push_back(ReportParagraph{upper(to_string(r.verdict.status)), tone_of(r.verdict.status), true});
-  if (const auto margins = margin_table(r.verdict); !margins.empty()) {
-    ReportTable t{{"Check", "Requirement", "Achieved (band)", "Margin", "Status"}, {}, {0.24, 0.14, 0.34, 0.1, 0.18}};
-    for (const auto& m : margins)
-      t.rows.push_back({m.check, m.requirement, m.achieved, m.margin,
-                        std::string(to_string(m.status)) + (m.governing ? " (governs)" : "")});
-    c.blocks.push_back(std::move(t));
+  if (!one_case) {  // no verdict: what it says instead
+    if (!r.verdict.reasons.empty()) {
+      c.blocks.push_back(ReportHeading{"Notes"});
+      c.blocks.push_back(ReportBullets{r.verdict.reasons});
+    }
+  } else {
+    add_verdict(c, r);
   }
-  c.blocks.push_back(ReportBullets{r.verdict.reasons});
-
   add_results(c, r);
+
   add_inputs(c, r);
 
   if (!r.charts.empty()) {

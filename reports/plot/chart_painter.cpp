@@ -182,6 +182,28 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
 
 }  // namespace
 
+LegendPlace legend_place(const DeviceBox& plot, double box_width, double box_height,
+                         const std::vector<std::pair<double, double>>& marks) {
+  constexpr double kInset = 4.0;
+  const LegendPlace corners[] = {
+      {plot.right - box_width - kInset, plot.top + kInset},
+      {plot.left + kInset, plot.top + kInset},
+      {plot.right - box_width - kInset, plot.bottom - box_height - kInset},
+      {plot.left + kInset, plot.bottom - box_height - kInset}};
+  LegendPlace best = corners[0];
+  std::size_t fewest = marks.size() + 1;
+  for (const LegendPlace& c : corners) {
+    std::size_t covered = 0;
+    for (const auto& [mx, my] : marks)
+      covered += mx >= c.x && mx <= c.x + box_width && my >= c.y && my <= c.y + box_height;
+    if (covered < fewest) {
+      fewest = covered;
+      best = c;
+    }
+  }
+  return best;
+}
+
 std::string axis_title(const ChartAxis& axis) {
   return axis.unit.empty() ? axis.label : axis.label + " [" + axis.unit + "]";
 }
@@ -245,7 +267,7 @@ void paint_chart(cairo_t* cr, const Chart& chart, double x, double y, double wid
         draw_series(cr, chart.series[i], sx, sy, colour_of(chart.series[i], i));
   cairo_restore(cr);
 
-  // Legend, top right inside the plot.
+  // Legend, inside the plot where it hides the fewest marks.
   if (!chart.series.empty()) {
     cairo_select_font_face(cr, style::kFont, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, style::kTickSize);
@@ -256,7 +278,22 @@ void paint_chart(cairo_t* cr, const Chart& chart, double x, double y, double wid
       widest = std::max(widest, e.x_advance);
     }
     const double box_w = widest + 30, row = 11, box_h = row * chart.series.size() + 6;
-    const double bx = right - box_w - 4, by = top + 4;
+    std::vector<std::pair<double, double>> marks;  // what the box should not hide
+    for (const auto& s : chart.series) {
+      const auto& upper = s.y_upper.empty() ? s.y : s.y_upper;
+      for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+        marks.emplace_back(sx(s.x[k]), sy(s.y[k]));
+        if (k < upper.size()) marks.emplace_back(sx(s.x[k]), sy(upper[k]));
+        if (k == 0 || s.style == SeriesStyle::points || s.style == SeriesStyle::marker) continue;
+        for (int j = 1; j < 16; ++j) {  // along the segment from the previous point
+          const double f = j / 16.0;
+          marks.emplace_back(sx(s.x[k - 1]) + f * (sx(s.x[k]) - sx(s.x[k - 1])),
+                             sy(s.y[k - 1]) + f * (sy(s.y[k]) - sy(s.y[k - 1])));
+        }
+      }
+    }
+    const LegendPlace place = legend_place({left, top, right, bottom}, box_w, box_h, marks);
+    const double bx = place.x, by = place.y;
     cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
     cairo_rectangle(cr, bx, by, box_w, box_h);
     cairo_fill(cr);

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "models/core/chart.hpp"
 
@@ -15,6 +17,18 @@ void paint_chart(cairo_t* cr, const Chart& chart, double x, double y, double wid
 
 // The chart as PNG bytes, `width` x `height` pixels (for HTML reports).
 std::string chart_png(const Chart& chart, int width, int height);
+
+// Where the legend box goes: of the plot area's four inner corners (top right first, then top
+// left, bottom right, bottom left), the first that covers the fewest of `marks` (the series'
+// points and their segments sampled, in device units). Returns the box's top-left corner.
+struct LegendPlace {
+  double x = 0.0, y = 0.0;
+};
+struct DeviceBox {
+  double left = 0.0, top = 0.0, right = 0.0, bottom = 0.0;
+};
+LegendPlace legend_place(const DeviceBox& plot, double box_width, double box_height,
+                         const std::vector<std::pair<double, double>>& marks);
 
 // "semi-angle [deg]", or the label alone for pure numbers.
 std::string axis_title(const ChartAxis& axis);

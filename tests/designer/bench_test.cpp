@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -221,6 +222,15 @@ TEST(BenchTable, TheFinestLevelsIntervalWidensTheReference) {
   EXPECT_NE(t.reference.agreement.find("DEM 43.5 +- 0.8 deg"), std::string::npos)
       << t.reference.agreement;
   EXPECT_NEAR(bench_json({t})[0]["answers"][3]["interval"].get<double>(), 0.8, 1e-12);
+  // the chart draws the reference's error bar in % across the points' wall times
+  const auto chart = error_against_time_chart(t);
+  ASSERT_TRUE(chart);
+  const auto bar =
+      std::find_if(chart->series.begin(), chart->series.end(), [](const ChartSeries& s) {
+        return s.label.find("error bar") != std::string::npos;
+      });
+  ASSERT_NE(bar, chart->series.end());
+  EXPECT_NEAR(bar->y.at(0), 100.0 * *t.reference.error_bar / 40.0, 1e-9);
 
   // the rate: its band is its interval
   BenchPoint rate = point("CEL 5", "L2", ReferenceRole::cel_refinement, 0.005);

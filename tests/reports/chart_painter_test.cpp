@@ -99,5 +99,19 @@ TEST(ChartPainter, DegenerateChartsRender) {
   EXPECT_EQ(axis_title({"semi-angle", "deg"}), "semi-angle [deg]");
 }
 
+// The legend goes to the first of the corners (top right, top left, bottom right, bottom left)
+// that hides the fewest marks: top right when it is empty; bottom left when points crowd the
+// other three corners (a rising series would hide its slowest-and-worst point otherwise).
+TEST(ChartPainter, TheLegendAvoidsTheMarks) {
+  const DeviceBox plot{0, 0, 200, 100};
+  const LegendPlace empty = legend_place(plot, 60, 30, {{10, 90}});
+  EXPECT_DOUBLE_EQ(empty.x, 200 - 60 - 4);
+  EXPECT_DOUBLE_EQ(empty.y, 4);
+  const LegendPlace crowded =
+      legend_place(plot, 60, 30, {{190, 10}, {10, 10}, {190, 90}, {180, 20}});
+  EXPECT_DOUBLE_EQ(crowded.x, 4);
+  EXPECT_DOUBLE_EQ(crowded.y, 100 - 30 - 4);
+}
+
 }  // namespace
 }  // namespace feedflow

@@ -128,5 +128,32 @@ TEST(DesignReport, HtmlIsSelfContained) {
   EXPECT_NE(html.find("class=\"pass\""), std::string::npos);
 }
 
+// A record of no case (the bench over the seed's cases) reads as a report, not a design of one
+// piece of equipment: no equipment, verdict, inputs, material sheet or case file, its verdict's
+// notes under "Notes".
+TEST(DesignReport, ARecordOfNoCaseHasNoEquipmentVerdictOrInputs) {
+  DesignRecord r = record();
+  r.case_name = "bench";
+  r.case_file.clear();
+  r.inputs.clear();
+  r.verdict = {VerdictStatus::unknown, {"note: a benchmark, not a design check"}};
+  const auto content = design_report_content(r, {}, "today");
+  EXPECT_EQ(content.title, "Report: bench");
+  EXPECT_EQ(content.header.find("hopper"), std::string::npos) << content.header;
+  std::string text;
+  for (const auto& block : content.blocks) {
+    if (const auto* h = std::get_if<ReportHeading>(&block)) text += "#" + h->text + "\n";
+    if (const auto* p = std::get_if<ReportParagraph>(&block)) text += p->text + "\n";
+    if (const auto* b = std::get_if<ReportBullets>(&block))
+      for (const auto& item : b->items) text += item + "\n";
+  }
+  for (const char* absent :
+       {"#Verdict", "#Inputs", "#Material data sheet", "Equipment:", "case file:", "UNKNOWN"})
+    EXPECT_EQ(text.find(absent), std::string::npos) << absent << " in\n" << text;
+  for (const char* present :
+       {"#Notes", "note: a benchmark, not a design check", "#Results", "feedflow 0.1.0"})
+    EXPECT_NE(text.find(present), std::string::npos) << present << " not in\n" << text;
+}
+
 }  // namespace
 }  // namespace feedflow
