@@ -3,7 +3,7 @@
 #include <cctype>
 
 #include "designer/design/model_choices.hpp"
-#include "designer/simulate/drum_angle_interval.hpp"
+#include "models/core/design_record.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
@@ -196,7 +196,7 @@ std::vector<BenchQuestion> seed_bench_questions() {
       add_dem_points(q, quantity, "18mm");  // the default is the seed's whole 3D drum
       if (!regime)
         for (auto& p : q.points)
-          if (p.solver) p.interval_key = kAngleIntervalKey;
+          if (p.solver) p.interval_key = interval_key(quantity);
       questions.push_back(std::move(q));
     }
   }

@@ -23,13 +23,26 @@ std::string answer(const Estimate& e) {
          (e.low && e.high ? " (band " + estimate_band_text(e) + ")" : std::string());
 }
 
-bool agree(const Estimate& reduced, const Estimate& simulated) {
+// Whether the reduced band meets the simulated answer's: its band, or for a time average with
+// an interval of its mean (`interval`, a half-width), that interval (the band of a fluctuating
+// answer says where one snapshot lies, not where the mean does).
+bool agree(const Estimate& reduced, const Estimate& simulated, const Estimate* interval) {
   if (reduced.is_number() != simulated.is_number()) return false;
   if (!reduced.is_number())
     return std::get<std::string>(reduced.value) == std::get<std::string>(simulated.value);
   const double r = std::get<double>(reduced.value), s = std::get<double>(simulated.value);
-  return reduced.low.value_or(r) <= simulated.high.value_or(s) &&
-         simulated.low.value_or(s) <= reduced.high.value_or(r);
+  double low = simulated.low.value_or(s), high = simulated.high.value_or(s);
+  if (interval && interval->is_number() && interval->unit == simulated.unit) {
+    low = s - std::get<double>(interval->value);
+    high = s + std::get<double>(interval->value);
+  }
+  return reduced.low.value_or(r) <= high && low <= reduced.high.value_or(r);
+}
+
+// "; its mean's 95 % interval +-1.1 deg" for an answer that has one.
+std::string interval_text(const Estimate* interval) {
+  if (!interval || !interval->is_number()) return "";
+  return ", its mean's 95 % interval +-" + estimate_value_text(*interval);
 }
 
 // The thinnest layer the run resolves [m]: two particle diameters (DEM) or two cells (CEL, when the
@@ -108,10 +121,12 @@ void apply_simulation_verification(const Case& c, const SimulationVerification& 
     if (full.display_unit.empty()) full.display_unit = reduced.display_unit;
     it->second = full;
     record.results.emplace(it + 1, reduced_model_key(key), reduced);
-    notes.push_back(quantity_label(key) + (agree(reduced, full) ? " verified" : " contradicted") +
-                    " on the " + rung + ": reduced " + answer(reduced) + ", " +
-                    (v.solver == Solver::dem ? "DEM " : "CEL ") + answer(full) + " (" + full.model +
-                    ")");
+    const Estimate* interval = find_estimate(simulated, interval_key(key));
+    notes.push_back(quantity_label(key) +
+                    (agree(reduced, full, interval) ? " verified" : " contradicted") + " on the " +
+                    rung + ": reduced " + answer(reduced) + ", " +
+                    (v.solver == Solver::dem ? "DEM " : "CEL ") + answer(full) +
+                    interval_text(interval) + " (" + full.model + ")");
   }
   if (notes.empty())
     notes.push_back("the " + rung + " run gave nothing to compare with the reduced answers");

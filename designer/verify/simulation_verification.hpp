@@ -4,7 +4,8 @@
 // back on a second call), whose record holds each simulated quantity beside the reduced one
 // (`<key>_reduced_model`). Each such quantity then stands in the design record in place of the
 // reduced one, which stays beside it, and is verified when the two agree (numbers: the reduced
-// band and the simulated interval overlap; labels: the same) or contradicted, with both answers;
+// band and the simulated one overlap, or for a time average the interval of its mean
+// (`<key>_interval`: the drum's angle); labels: the same) or contradicted, with both answers;
 // the verdict is judged again on the simulated ones. A chute's layer thinner than the run resolves
 // (two particle diameters, two cells) is not taken: the reduced answer stands and a note says why.
 #include <filesystem>

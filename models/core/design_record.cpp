@@ -36,6 +36,8 @@ const Estimate* find_estimate(const Estimates& estimates, std::string_view key) 
   return nullptr;
 }
 
+std::string interval_key(std::string_view key) { return std::string(key) + "_interval"; }
+
 VerdictStatus verdict_status_from_string(const std::string& text) {
   if (text == "pass") return VerdictStatus::pass;
   if (text == "marginal") return VerdictStatus::marginal;

@@ -37,6 +37,9 @@ using Estimates = std::vector<std::pair<std::string, Estimate>>;
 
 // The estimate of `key`, or null when the list has none.
 const Estimate* find_estimate(const Estimates& estimates, std::string_view key);
+// Where a time-averaged result keeps the half-width of its mean's 95 % interval, when its band
+// is something wider (the drum's angle: 2 SD of the sampled angle): "<key>_interval".
+std::string interval_key(std::string_view key);
 
 // One reason of a verdict with the numbers it was judged on: the quantity (a key of the
 // record's results), its value and band, and the limit it was held against, all in `unit` (the
