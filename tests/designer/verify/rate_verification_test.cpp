@@ -1,8 +1,8 @@
 // The plan of a discharge-rate verification (designer/verify/rate_verification): read from the
 // shipped bench table (the pilot hopper at 3, 6, 12 cells across the half outlet: 11.8, 73.4 and
 // 516.8 s; error bars 4.81 % for two levels with the remap's formal order 1 (the three levels
-// showed no order), 4.59 % for three), the cheapest plan that meets the tolerance within the
-// budget, its time scaled by W^-3.
+// showed no order), 4.64 % for three, with the finest level's 95 % interval), the cheapest plan
+// that meets the tolerance within the budget, its time scaled by W^-3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +31,7 @@ TEST(RateVerification, CheapestPlanThatMeetsTheTolerance) {
   const RateVerificationPlan three = plan_rate_verification(pilot(0.06), 0.047, 3600);
   ASSERT_EQ(three.cells_across, (std::vector<double>{3, 6, 12}));
   EXPECT_NEAR(three.estimated_seconds, 11.8 + 73.4 + 516.8, 1.0);
-  EXPECT_NEAR(three.expected_error, 0.0459, 1e-4);
+  EXPECT_NEAR(three.expected_error, 0.0464, 1e-4);
   const RateVerificationPlan none = plan_rate_verification(pilot(0.06), 0.047, 300);
   EXPECT_TRUE(none.cells_across.empty());
   EXPECT_NE(none.description.find("no plan meets 4.7 % within 5 min"), std::string::npos)
