@@ -222,9 +222,11 @@ int show_measured(const BenchArguments& args) {
   j["tolerance"] = tolerance;
   j["questions"] = nlohmann::ordered_json::array();
   const bool say = args.options.human_output();
-  if (say)
-    std::cout << "Bench table shipped with feedflow, measured " << table.date << " (" << table.provenance
-              << ").\nCheapest measured setting within " << format_number(100 * tolerance, 3) << " % of the reference:\n";
+  if (say)  // the machine in a few words; every point set's commit and load in the JSON
+    std::cout << "Bench table shipped with feedflow, measured " << table.date << " on "
+              << table.provenance.substr(0, table.provenance.find(". "))
+              << " (each point set's commit and load: --json -).\nCheapest measured setting within "
+              << format_number(100 * tolerance, 3) << " % of the reference:\n";
   for (const auto& q : table.questions) {
     const MeasuredAnswer* best = cheapest_within(q, tolerance);
     nlohmann::ordered_json jq{{"id", q.id}, {"reference_source", q.reference_source}};
