@@ -301,9 +301,8 @@ std::string csv_number(const std::optional<double>& v) {
 std::string bench_csv(const std::vector<BenchQuestionTable>& tables) {
   std::string s =
       "question,rung,setting,resolution,in_reference,quantity,value,low,high,interval,unit,"
-      "reference,"
-      "reference_error_bar,"
-      "error,band_holds_reference,pareto_front,wall_time_s,cores,status,invocation\n";
+      "reference,reference_error_bar,error,band_holds_reference,pareto_front,wall_time_s,cores,"
+      "status,invocation\n";
   for (const auto& t : tables)
     for (const auto& a : t.answers) {
       const BenchQuestion& q = *t.question;

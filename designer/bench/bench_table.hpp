@@ -34,8 +34,8 @@ struct BenchAnswer {
   const BenchPoint* point = nullptr;
   const BenchRun* run = nullptr;     // none: not run (not in this bench's selection)
   std::optional<double> value, low, high;
-  std::optional<double>
-      interval;  // half-width of the value's statistical 95 % interval (a time average)
+  // The half-width of the value's statistical 95 % interval (a time average's mean).
+  std::optional<double> interval;
   std::string label;                 // a label answer, or why there is no answer
   std::string unit;
   std::optional<double> error;       // relative (numbers) or 0/1 (labels); none without reference

@@ -39,7 +39,7 @@ bool agree(const Estimate& reduced, const Estimate& simulated, const Estimate* i
   return reduced.low.value_or(r) <= high && low <= reduced.high.value_or(r);
 }
 
-// "; its mean's 95 % interval +-1.1 deg" for an answer that has one.
+// ", its mean's 95 % interval +-1.1 deg" for an answer that has one.
 std::string interval_text(const Estimate* interval) {
   if (!interval || !interval->is_number()) return "";
   return ", its mean's 95 % interval +-" + estimate_value_text(*interval);
