@@ -5,7 +5,9 @@
 #include <ostream>
 
 #include "designer/bench/bench_run.hpp"
+#include "designer/verify/dem_run_estimate.hpp"
 #include "designer/verify/rejudge.hpp"
+#include "fullsim/common/progress_line.hpp"
 #include "models/contact/contact_law_registry.hpp"
 #include "models/core/errors.hpp"
 #include "models/hopper/critical_outlet.hpp"
@@ -126,6 +128,26 @@ ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRec
   }
   plan.runs = 1 + bisection_runs(plan.low, plan.high, tolerance);
   return plan;
+}
+
+ArchingVerificationCost estimate_arching_verification(const Case& c, const DesignRecord& record,
+                                                      const ArchingVerificationPlan& plan) {
+  const Estimate* rate = find_estimate(record.results, "mass_flow_rate");
+  const double q =
+      rate && rate->is_number() && rate->unit == "kg/s" ? std::get<double>(rate->value) : 0.0;
+  const double w = std::get<Hopper>(c.equipment).outlet_width,
+               middle = 0.5 * (plan.low + plan.high);
+  const DemRunEstimate at_outlet = estimate_dem_hopper_run(c, q);
+  Case narrower = c;
+  std::get<Hopper>(narrower.equipment).outlet_width = middle;
+  const DemRunEstimate in_band = estimate_dem_hopper_run(narrower, q * std::pow(middle / w, 1.5));
+  ArchingVerificationCost cost;
+  cost.seconds = at_outlet.seconds + (plan.runs - 1) * in_band.seconds;
+  cost.text = "about " + format_duration(cost.seconds) + " by its estimate: the outlet's run " +
+              at_outlet.text() + ", each of the " + std::to_string(plan.runs - 1) + " more at " +
+              mm(middle) + " " + in_band.text() +
+              ", each until it empties at the reduced rate (one that arches stops sooner)";
+  return cost;
 }
 
 ArchingVerification verify_arching(const std::string& case_file,

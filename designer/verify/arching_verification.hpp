@@ -43,6 +43,16 @@ struct ArchingVerificationPlan {
 ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRecord& record,
                                                   double tolerance);
 
+// What the plan's DEM runs will cost by their estimate (dem_run_estimate.hpp): the design
+// outlet's run, and each of the bisection's at the band's middle (the reduced rate scaled as
+// W^1.5), every one as if it flowed until the hopper emptied (one that arches stops sooner).
+struct ArchingVerificationCost {
+  double seconds = 0.0;  // [s] on the bench machine's two cores
+  std::string text;      // "about 9.1 h on 2 cores by its estimate: ..."
+};
+ArchingVerificationCost estimate_arching_verification(const Case& c, const DesignRecord& record,
+                                                      const ArchingVerificationPlan& plan);
+
 struct ArchingVerification {
   std::optional<OutletOutcome> at_design;  // the design outlet's run
   WidthBisection bisection;

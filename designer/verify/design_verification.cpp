@@ -4,8 +4,10 @@
 
 #include "designer/simulate/solver_choice.hpp"
 #include "designer/verify/arching_verification.hpp"
+#include "designer/verify/dem_run_estimate.hpp"
 #include "designer/verify/rate_verification.hpp"
 #include "designer/verify/simulation_verification.hpp"
+#include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
 #include "models/units/quantity_format.hpp"
@@ -29,6 +31,13 @@ bool marginal_on(const DesignRecord& r, const std::string& quantity) {
   for (const auto& f : r.verdict.findings)
     if (f.quantity == quantity && f.status == VerdictStatus::marginal) return true;
   return false;
+}
+
+// A --budget that holds `seconds` of estimated runs with a fifth to spare: "13h", "40min".
+std::string budget_holding(double seconds) {
+  const double spared = 1.2 * seconds;
+  return spared > 7200.0 ? format_number(std::ceil(spared / 3600.0), 3) + "h"
+                         : format_number(std::ceil(spared / 60.0), 3) + "min";
 }
 
 // --verify dem on a hopper: arching at the design outlet and the arching width by bisection on
@@ -96,36 +105,59 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
   for (const auto& set : args.sets) again += " --set " + quoted(set);
   if (marginal_on(record, "critical_outlet_width") ||
       marginal_on(record, "mechanical_arching_width")) {
-    std::string how;  // what --verify dem would run, when the case allows it
+    // The continuum cannot arch: the particle rung verifies arching, asked for (dem) or, within
+    // the budget by its estimate, by auto.
+    std::string how;  // what --verify dem would run and cost, when the case allows it
     std::string command = again + " --verify dem";
     Case particles = c;
+    std::vector<std::string> particle_sets = args.sets;
     if (marginal_on(record, "critical_outlet_width"))  // cohesive arches need contacts that pull
       if (auto cohesive = with_cohesive_contacts(c)) {
         particles = *cohesive;
+        particle_sets.push_back("dem.cohesion=k_nc");
         command = again + " --set dem.cohesion=k_nc --verify dem";
       }
+    std::optional<double> estimated;  // [s] the plan's runs
+    std::string unanswered;           // why the particle rung cannot settle the marginal check
     try {
       const ArchingVerificationPlan plan = plan_arching_verification(
           particles, record,
           parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm"));
+      if (!marginal_on(record, plan.quantity))
+        unanswered = "the case's DEM contacts (" + plan.law +
+                     ") do not pull, so they verify interlocking arches, not the cohesive B_c";
+      const ArchingVerificationCost cost = estimate_arching_verification(particles, record, plan);
+      estimated = cost.seconds;
+      command += " --budget " + budget_holding(cost.seconds);
       how = " (" + std::to_string(plan.runs) + " DEM runs with the " + plan.law +
-            " law: the outlet, then a bisection on the width to " + args.width_tolerance + ")";
+            " law: the outlet, then a bisection on the width to " + args.width_tolerance + "; " +
+            cost.text + ")";
     } catch (const InputError& e) {
       how = " (not with this case: " + std::string(e.what()) + ")";
     }
-    record.verdict.reasons.push_back(
-        "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and "
-        "cannot arch; the particle rung can (interlocking arches with any law, cohesive ones with "
-        "the seed's K_nc): " +
-        command + how);
+    if (args.mode == "auto" && estimated && unanswered.empty() && *estimated <= budget) {
+      VerificationRequest on_particles = args;
+      on_particles.sets = particle_sets;
+      if (!dem_verification(on_particles, particles, *h, runs, record)) return false;
+    } else {
+      record.verdict.reasons.push_back(
+          "arching is not verified on the continuum rung: its hypoplastic law has no cohesion and "
+          "cannot arch; the particle rung can (interlocking arches with any law, cohesive ones "
+          "with the seed's K_nc): " +
+          command + how +
+          (args.mode != "auto" || !estimated ? std::string()
+           : !unanswered.empty()
+               ? "; not run by auto: " + unanswered
+               : "; not run by auto: beyond the budget of " + format_duration(budget) +
+                     ", a --budget that holds it runs it"));
+    }
   }
   const bool wanted = args.mode == "cel" || (args.mode == "auto" && rate_marginal);
   if (!wanted) {
     if (rate_marginal) {
       const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
-      const std::string command =
-          again + " --verify auto --tolerance " + quoted(args.tolerance) + " --budget " +
-          format_number(std::ceil(plan.estimated_seconds / 60.0 * 1.2), 3) + "min";
+      const std::string command = again + " --verify auto --tolerance " + quoted(args.tolerance) +
+                                  " --budget " + budget_holding(plan.estimated_seconds);
       record.verdict.reasons.push_back(
           plan.cells_across.empty()
               ? "the discharge rate cannot be verified: " + plan.description

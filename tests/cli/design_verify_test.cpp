@@ -33,8 +33,9 @@ bool said(const nlohmann::json& j, const std::string& text) {
 // command that would settle it is named; with --verify auto and 2 min no plan meets 10 % (two
 // levels: 4.8 % but 3.4 min; three: 24 min) and the verdict says so. Its arching is MARGINAL too
 // (45 mm < 1.2 x the B_c band top, 50.6 mm): the continuum cannot arch, so the command for the
-// particle rung is named, with the user's settings and its runs (the outlet, then 7 widths to
-// bisect 20.5-42.2 mm to 1 mm).
+// particle rung is named, with the user's settings, its runs (the outlet, then 7 widths to
+// bisect 20.5-42.2 mm to 1 mm), their estimated wall time (hours: 35 000 spheres at the seed's
+// 0.745 us step) and a budget that holds it, which auto's does not.
 TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const fs::path dir = scratch_folder("feedflow_verify", true);
   const auto clear = design_json(dir, "--set hopper.outlet_width=100mm --verify auto");
@@ -44,12 +45,15 @@ TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   const auto asked = design_json(dir, marginal);
   EXPECT_TRUE(said(asked, "to settle the discharge rate: feedflow design cases/pilot_hopper.toml --set "
                           "hopper.outlet_width=45mm --set design.required_throughput=3.7kg/s --verify auto"));
-  EXPECT_TRUE(said(asked,
-                   "feedflow design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --set "
-                   "design.required_throughput=3.7kg/s --set dem.cohesion=k_nc --verify dem (8 DEM "
-                   "runs with the hysteretic_nonlinear2 + k_nc cohesion law"));
+  EXPECT_TRUE(
+      said(asked,
+           "feedflow design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --set "
+           "design.required_throughput=3.7kg/s --set dem.cohesion=k_nc --verify dem --budget "));
+  EXPECT_TRUE(said(asked, "h (8 DEM runs with the hysteretic_nonlinear2 + k_nc cohesion law"));
+  EXPECT_TRUE(said(asked, "by its estimate: the outlet's run about "));
   const auto refused = design_json(dir, marginal + " --verify auto --budget 2min");
   EXPECT_TRUE(said(refused, "mass flow rate not verified: no plan meets 10 % within 2 min"));
+  EXPECT_TRUE(said(refused, "not run by auto: beyond the budget of 2 min 00 s"));
   EXPECT_EQ(refused["results"]["mass_flow_rate"]["rung"], "L0");
   fs::remove_all(dir);
 }
@@ -114,6 +118,32 @@ TEST(DesignVerifyDem, DesignOutletObservedAndBisectionRefusedBeyondTheBudget) {
   EXPECT_TRUE(said(j, "pass: the outlet flows (observed)"));
   EXPECT_TRUE(said(j, "the bisection needs 6 more DEM runs")) << j["verdict"]["reasons"];
   EXPECT_FALSE(j["results"].contains("mechanical_arching_width_dem_spheres"));
+  fs::remove_all(dir);
+}
+
+// `auto` escalates arching to the particle rung when the particle rung can settle the marginal
+// check and the runs' estimate fits the budget. The twin's Hertz spheres cannot pull: at 40 mm
+// (the cohesive B_c marginal) auto names the command and says why it ran none. At 10 mm the
+// interlocking check is marginal (5.37-14.3 mm), which they can settle: 1 s holds none of the
+// three runs' estimated 11 s, so none is made; 5 min holds them, and the outlet is observed to
+// arch on rung L3 with the spheres' interlocking width bracketed beside the reduced one.
+TEST(DesignVerifyDem, AutoRunsTheParticleRungWhenItAnswersWithinTheBudget) {
+  const fs::path dir = twin_folder();
+  const auto cohesive =
+      design_json(dir, "--set hopper.outlet_width=40mm --verify auto", "twin.toml");
+  EXPECT_TRUE(said(cohesive, "not run by auto: the case's DEM contacts (hertz) do not pull"));
+  EXPECT_EQ(cohesive["results"]["arching"]["rung"], "L0");
+  const std::string interlocking =
+      "--set hopper.outlet_width=10mm --verify auto --width-tolerance 30mm";
+  const auto short_budget = design_json(dir, interlocking + " --budget 1s", "twin.toml");
+  EXPECT_TRUE(said(short_budget, "not run by auto: beyond the budget of 1 s"));
+  EXPECT_EQ(short_budget["results"]["arching"]["rung"], "L0");
+  EXPECT_FALSE(fs::exists(dir / "out" / "dem_hopper_twin_verify"));
+  const auto j = design_json(dir, interlocking + " --budget 5min", "twin.toml");
+  EXPECT_EQ(j["results"]["arching"]["rung"], "L3");
+  EXPECT_EQ(j["results"]["arching"]["value"], "arched");
+  EXPECT_EQ(j["results"]["mechanical_arching_width_dem_spheres"]["rung"], "L3");
+  EXPECT_TRUE(said(j, "mechanical arching width verified on the particle rung"));
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,48 @@
+#include "designer/verify/dem_run_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "designer/simulate/dem_hopper_scene.hpp"
+#include "fullsim/common/progress_line.hpp"
+#include "models/units/quantity_format.hpp"
+
+namespace feedflow {
+
+std::string DemRunEstimate::text() const {
+  return "about " + format_duration(seconds) + " on " + std::to_string(kDemHopperCores) +
+         " cores (" + format_number(spheres, 3) + " spheres, " +
+         format_number((fill_time + discharge_time) / time_step / 1e6, 2) + " million steps of " +
+         format_quantity(time_step, "us", 3) + ")";
+}
+
+DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {
+  const DemHopperScene scene = hopper_scene_from_case(c);
+  const RainFillSettings rain = scene.rain();
+  const double r = scene.radius();
+  // The step is the stable one of the law and the spheres: one sphere prepares it.
+  DemEngine probe = hopper_scene_structure(scene);
+  probe.insert_particle(0.5 * (rain.region_lower + rain.region_upper), r, scene.density, 0.0,
+                        Vec3::Zero());
+  std::ostringstream plan;
+  probe.prepare(plan);
+  DemRunEstimate e;
+  const double sphere_mass = scene.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  e.spheres = std::floor(rain.target_mass / sphere_mass);
+  e.time_step = probe.time_step();
+  const double inserting = rain.target_mass / rain.mass_rate;
+  e.fill_time = inserting + rain.settle_time_cap;
+  const double real_content = rain.target_mass * scene.scale();
+  e.discharge_time = reduced_rate > 0.0
+                         ? std::min(real_content / reduced_rate, scene.default_duration)
+                         : scene.default_duration;
+  // Inserting and emptying hold half the spheres on average; settling holds them all.
+  e.particle_steps =
+      e.spheres * (0.5 * inserting + rain.settle_time_cap + 0.5 * e.discharge_time) / e.time_step;
+  e.seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  return e;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,39 @@
+#pragma once
+// What a DEM hopper run of a case will cost, before it is made: the plan of `--verify` on the
+// particle rung, and the wall time a MARGINAL verdict quotes beside the command that would
+// settle it. The scene says the spheres (the fill's target mass over one sphere's: an upper
+// bound, the fill stops at its height), the time step (the stable one of the case's contact
+// law) and the simulated times (inserting, settling at its cap, and a discharge at the reduced
+// rate until the hopper is empty, capped by the scene's end); the wall time is their
+// particle-steps at the rate the DEM hopper ran at on two cores of the bench machine. A run
+// that arches stops sooner; one whose grains flow slower than the reduced rate takes longer.
+#include <string>
+
+#include "designer/case/case.hpp"
+
+namespace feedflow {
+
+// [particle-steps/s] the pilot hopper's DEM run at 45 mm (hysteretic_nonlinear2 + k_nc, 7768
+// spheres, 0.35 m fill) kept from its fill to its emptying, on the two threads of the bench
+// machine, 2026-12-06: 3534 s at 6.38e6 and 1185 s at 7.71e6 (its performance blocks).
+constexpr double kDemHopperParticleStepsPerSecond = 6.7e6;
+constexpr int kDemHopperCores = 2;
+
+struct DemRunEstimate {
+  double spheres = 0.0;         // filled (upper bound)
+  double time_step = 0.0;       // [s]
+  double fill_time = 0.0;       // [s] simulated: inserting and settling
+  double discharge_time = 0.0;  // [s] simulated after the opening
+  double particle_steps = 0.0;  // the fill's, then the discharge's (the hopper emptying evenly)
+  double seconds = 0.0;         // [s] wall, at kDemHopperParticleStepsPerSecond
+
+  // "about 1.3 h on 2 cores (9724 spheres, 8.0e6 steps of 0.745 us)"
+  std::string text() const;
+};
+
+// The estimate for one DEM run of the hopper case `c` (its [dem] settings as the run will have
+// them), whose reduced discharge rate is `reduced_rate` [kg/s of the real hopper]. Throws
+// InputError, as the scene does, for a case the DEM scene cannot build.
+DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate);
+
+}  // namespace feedflow
