@@ -166,6 +166,25 @@ std::vector<BenchQuestion> seed_bench_questions() {
     questions.push_back(std::move(q));
   }
 
+  {  // B_c: the continuum cannot arch (its law has no cohesion), so only the particle rung
+     // measures it: the seed's law with K_nc's pull, bisected over the reduced band to 2.5 mm,
+     // on half the seed's fill (B_c is set at the outlet; 0.35 m halves the spheres).
+    BenchQuestion q =
+        hopper_question("hopper_critical_outlet_width",
+                        "Pilot hopper: critical outlet width B_c at 30 deg", 45 * kMm, false);
+    add_model_alternatives(q, "hopper.critical_outlet", "critical_outlet_width", "L0");
+    BenchPoint p;
+    p.setting = "DEM " + std::string(kSeedLaw) + " + k_nc, 0.35 m fill, bisection to 2.5 mm";
+    p.rung = "L3";
+    p.quantity = "critical_outlet_width";
+    p.sets = {"dem.cohesion=k_nc", "hopper.fill_height=0.35m"};
+    p.verify = "dem";
+    p.width_tolerance = "2.5mm";
+    p.role = ReferenceRole::dem_reference;
+    q.points.push_back(std::move(p));
+    questions.push_back(std::move(q));
+  }
+
   for (const char* angle : {"29_5", "37"}) {
     BenchQuestion q{std::string("chute_stopping_thickness_") + angle,
                     std::string("Inclined plane at ") + (angle == std::string("37") ? "37" : "29.5") +

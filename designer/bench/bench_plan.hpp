@@ -25,6 +25,10 @@ struct BenchPoint {
   std::string rung;                  // "L0", "L1", "L2", "L3"
   std::string quantity;              // the results key this point answers with
   std::optional<Solver> solver;      // none: the design check (reduced models)
+  // "dem": the design check verified on that rung (`design --verify dem`: the critical outlet
+  // width bracketed by a bisection of DEM runs, each flowing or arching) to `width_tolerance`.
+  std::string verify;
+  std::string width_tolerance;       // as typed: "2.5mm"
   std::vector<std::string> sets;     // --set KEY=VALUE beyond the question's own
   std::vector<std::string> models;   // --model KEY=NAME
   std::optional<double> time;        // [s] simulated time (--time); none: the scene's own end

@@ -27,7 +27,11 @@ struct BenchRun {
   bool done() const { return status == "done"; }
 };
 
-// The command line of the point: "simulate cases/pilot_hopper.toml --solver cel --set ...".
+// The budget a verified point's command names: the bench measures what its runs take.
+inline constexpr const char* kUnlimitedVerificationBudget = "10000h";
+
+// The command line of the point: "simulate cases/pilot_hopper.toml --solver cel --set ...", or
+// for a verified design check "design ... --verify dem --width-tolerance 2.5mm --budget 10000h".
 std::string bench_invocation(const BenchQuestion& question, const BenchPoint& point);
 // The folder of the point's run below `root` (shared by questions asking for the same run).
 std::filesystem::path bench_run_folder(const std::filesystem::path& root, const BenchQuestion& question,
@@ -40,7 +44,8 @@ std::filesystem::path bench_run_folder(const std::filesystem::path& root, const 
 std::string bench_inputs_fingerprint(const BenchQuestion& question, const BenchPoint& point,
                                      const std::filesystem::path& source_root);
 
-// Runs the point: case files relative to `source_root`; a simulation's files go to `folder`,
+// Runs the point (not a verified one: designer/verify/verified_bench_point.hpp runs those):
+// case files relative to `source_root`; a simulation's files go to `folder`,
 // continuing from the checkpoint `restart` when one is given. A run that fails (bad input, a
 // blow-up) or is interrupted comes back with its status, never as a throw.
 BenchRun run_bench_point(const BenchQuestion& question, const BenchPoint& point,

@@ -21,6 +21,7 @@
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
 #include "designer/cli/report_files.hpp"
+#include "designer/verify/verified_bench_point.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
 #include "models/core/version.hpp"
@@ -179,7 +180,8 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
       continue;
     }
     bool made = false;
-    BenchRun run = run_or_read_back(*q, *p, cases_root, dir, made);
+    BenchRun run = p->verify.empty() ? run_or_read_back(*q, *p, cases_root, dir, made)
+                                     : run_or_read_back_verified(*q, *p, cases_root, dir, made);
     if (!made) {
       runs.by_folder[dir] = std::move(run);
       ++runs.read_back;

@@ -214,10 +214,11 @@ void apply_arching_verification(const Case& c, const ArchingVerificationPlan& pl
                     (b.steps.empty() ? std::string() : " (runs so far: " + outcomes(b) + ")"));
   } else if (b.end == WidthBisection::End::bracketed) {
     Estimate width;
-    width.value = 0.5 * (b.arches_at + b.flows_at) / 1e-3;
-    width.low = b.arches_at / 1e-3;
-    width.high = b.flows_at / 1e-3;
-    width.unit = "mm";
+    width.value = 0.5 * (b.arches_at + b.flows_at);  // SI, as the reduced width and the judge
+    width.low = b.arches_at;
+    width.high = b.flows_at;
+    width.unit = "m";
+    width.display_unit = "mm";
     width.model = "DEM (" + plan.law + ") bisection: arches at " + mm(b.arches_at) + ", flows at " +
                   mm(b.flows_at);
     width.rung = Rung::L3;

@@ -156,12 +156,13 @@ TEST(DesignVerifyDem, LONG_BisectionBracketsTheSpheresInterlockingWidth) {
   const auto j = design_json(dir, "--verify dem --width-tolerance 2mm --budget 30min", "twin.toml");
   const auto& w = j["results"]["mechanical_arching_width_dem_spheres"];
   EXPECT_EQ(w["rung"], "L3");
-  EXPECT_EQ(w["unit"], "mm");
+  EXPECT_EQ(w["unit"], "m");
+  EXPECT_EQ(w["display_unit"], "mm");
   const double low = w["low"].get<double>(), high = w["high"].get<double>();
-  EXPECT_GE(low, 18.0);
-  EXPECT_LE(high, 48.0);
+  EXPECT_GE(low, 0.018);
+  EXPECT_LE(high, 0.048);
   EXPECT_LT(low, high);
-  EXPECT_LE(high - low, 2.0 + 1e-9);
+  EXPECT_LE(high - low, 0.002 + 1e-12);
   EXPECT_EQ(j["results"]["mechanical_arching_width"]["rung"], "L0");
   EXPECT_TRUE(said(j, "mechanical arching width verified on the particle rung"));
   const auto again = design_json(dir, "--verify dem --width-tolerance 2mm --budget 30min", "twin.toml");

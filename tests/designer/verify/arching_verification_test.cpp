@@ -59,5 +59,33 @@ TEST(ArchingVerification, LawWithoutCohesionSearchesTheInterlockingRangeOfItsSph
   EXPECT_THROW(plan_for({}, 0.0), InputError);
 }
 
+// A bracket on the particle rung replaces B_c in SI with its display unit, and the verdict is
+// judged on it: the pilot hopper's 45 mm outlet, MARGINAL on the reduced band (1.2 x 42.2 mm =
+// 50.6 mm), passes once the DEM arches at 26.8 mm and flows at 29.5 mm (1.2 x 29.5 = 35.4 mm).
+TEST(ArchingVerification, ABracketedWidthIsJudgedInMetres) {
+  const Case c =
+      load_case("cases/pilot_hopper.toml", std::vector<SetOverride>{{"hopper.outlet_width", "45mm"},
+                                                                    {"dem.cohesion", "k_nc"}});
+  DesignRecord record = design_check(c, ModelChoices{});
+  EXPECT_EQ(record.verdict.status, VerdictStatus::marginal);
+  const auto plan = plan_arching_verification(c, record, 0.0025);
+  ArchingVerification v;
+  v.at_design = OutletOutcome::flows;
+  v.bisection.end = WidthBisection::End::bracketed;
+  v.bisection.arches_at = 0.0268;
+  v.bisection.flows_at = 0.0295;
+  v.bisection.steps = {{0.045, OutletOutcome::flows},
+                       {0.0268, OutletOutcome::arches},
+                       {0.0295, OutletOutcome::flows}};
+  apply_arching_verification(c, plan, v, record);
+  const Estimate* bc = find_estimate(record.results, "critical_outlet_width");
+  ASSERT_NE(bc, nullptr);
+  EXPECT_EQ(bc->rung, Rung::L3);
+  EXPECT_EQ(bc->unit, "m");
+  EXPECT_EQ(bc->display_unit, "mm");
+  EXPECT_DOUBLE_EQ(*bc->high, 0.0295);
+  EXPECT_EQ(record.verdict.status, VerdictStatus::pass);
+}
+
 }  // namespace
 }  // namespace feedflow
