@@ -176,13 +176,28 @@ ArchingVerification verify_arching(const std::string& case_file,
       bench_run_folder(runs_folder, question_at(case_file, sets, h.outlet_width), dem_point());
   v.at_design = judge_at(h.outlet_width);
   if (!v.at_design) return v;
-  const double needed = (plan.runs - 1) * v.longest_run;
+  // The bisection's runs already kept cost nothing: those it would read back before its first
+  // new one.
+  const auto kept_outcome = [&](double w) -> std::optional<OutletOutcome> {
+    const BenchQuestion q = question_at(case_file, sets, w);
+    const auto saved =
+        saved_run_of(q, dem_point(), ".", bench_run_folder(runs_folder, q, dem_point()));
+    return saved ? outcome_of(*saved) : std::nullopt;
+  };
+  const WidthBisection kept =
+      bisect_outlet_width(plan.low, plan.high, plan.tolerance, kept_outcome);
+  const int to_make = kept.end == WidthBisection::End::stopped
+                          ? std::max(0, plan.runs - 1 - static_cast<int>(kept.steps.size()))
+                          : 0;
+  const double needed = to_make * v.longest_run;
   if (needed > budget) {
-    v.status = "the bisection needs " + std::to_string(plan.runs - 1) + " more DEM runs of about " +
-               format_quantity(v.longest_run, v.longest_run < 60 ? "s" : "min", 2) + " each (" +
-               format_quantity(needed, "min", 2) + "), beyond the budget of " +
-               format_quantity(budget, "min", 2) +
-               "; runs made are kept and read back, so a larger --budget continues";
+    v.status =
+        "the bisection needs " + std::to_string(to_make) + " more DEM runs" +
+        (kept.steps.empty() ? std::string()
+                            : " (" + std::to_string(kept.steps.size()) + " of its runs kept)") +
+        " of about " + format_duration(v.longest_run) + " each (" + format_duration(needed) +
+        "), beyond the budget of " + format_duration(budget) +
+        "; runs made are kept and read back, so a larger --budget continues";
     return v;
   }
   v.bisection = bisect_outlet_width(plan.low, plan.high, plan.tolerance, judge_at);

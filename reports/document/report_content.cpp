@@ -25,7 +25,7 @@ void add_verdict(ReportContent& c, const DesignRecord& r) {
   if (const auto margins = margin_table(r.verdict); !margins.empty()) {
     ReportTable t{{"Check", "Requirement", "Achieved (band)", "Margin", "Status"},
                   {},
-                  {0.24, 0.14, 0.34, 0.1, 0.18}};
+                  {0.23, 0.16, 0.33, 0.1, 0.18}};
     for (const auto& m : margins)
       t.rows.push_back({m.check, m.requirement, m.achieved, m.margin,
                         std::string(to_string(m.status)) + (m.governing ? " (governs)" : "")});
