@@ -1,10 +1,12 @@
 // The plan of an arching verification on the particle rung (designer/verify/arching_verification):
 // the contact law decides what the DEM can verify, and the band it searches.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/arching_verification.hpp"
+#include "kept_runs.hpp"
 #include "models/core/errors.hpp"
 
 namespace feedflow {
@@ -85,6 +87,35 @@ TEST(ArchingVerification, ABracketedWidthIsJudgedInMetres) {
   EXPECT_EQ(bc->display_unit, "mm");
   EXPECT_DOUBLE_EQ(*bc->high, 0.0295);
   EXPECT_EQ(record.verdict.status, VerdictStatus::pass);
+}
+
+// Runs kept from an earlier call cost nothing: with the twin's design outlet (10 mm, 60 s) and
+// the bisection's first two widths (48 mm flows, 18 mm arches) kept, a 1 s budget is refused
+// for the 4 runs still to make (7 planned to 2 mm), not for all 6 of the bisection.
+TEST(ArchingVerification, TheBudgetCountsOnlyTheRunsNotKept) {
+  BenchQuestion q;
+  q.case_file = "tests/data/dem_hopper_twin.toml";
+  q.sets = {"hopper.outlet_width=10mm"};
+  const std::filesystem::path runs =
+      std::filesystem::temp_directory_path() / ("feedflow_kept_runs_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(runs);
+  testing::lay_down_run(q, BenchPoint{}, runs, "10mm", "arched", 60.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, runs, "48mm", "flowing", 50.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, runs, "18mm", "arched", 40.0, "aaaa");
+  const std::string case_file =
+      (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
+  const Case c = load_case(case_file, std::vector<SetOverride>{{"hopper.outlet_width", "10mm"}});
+  const auto plan = plan_arching_verification(c, design_check(c, ModelChoices{}), 0.002);
+  ASSERT_EQ(plan.runs, 7);
+  const ArchingVerification v =
+      verify_arching(case_file, q.sets, std::get<Hopper>(c.equipment), plan, 1.0, runs, nullptr);
+  EXPECT_EQ(v.at_design, OutletOutcome::arches);
+  EXPECT_EQ(v.wall_seconds, 0.0);  // nothing was made
+  EXPECT_NE(v.status.find("the bisection needs 4 more DEM runs (2 of its runs kept) of about "
+                          "1 min 00 s each (4 min 00 s)"),
+            std::string::npos)
+      << v.status;
+  std::filesystem::remove_all(runs);
 }
 
 }  // namespace

@@ -7,34 +7,13 @@
 #include <unistd.h>
 
 #include "designer/verify/verified_bench_point.hpp"
+#include "kept_runs.hpp"
 
 namespace feedflow {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The run the verification makes at outlet `width` ("48mm"), saved as it saves it.
-void lay_down_run(const BenchQuestion& q, const BenchPoint& p, const fs::path& runs,
-                  const std::string& width, const std::string& arching, double wall_seconds,
-                  const std::string& commit) {
-  BenchQuestion at = q;
-  at.id = "verify_arching";
-  at.case_file = (fs::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
-  at.sets.insert(at.sets.end(), p.sets.begin(), p.sets.end());
-  at.sets.push_back("hopper.outlet_width=" + width);
-  BenchPoint dem;
-  dem.setting = "DEM";
-  dem.rung = "L3";
-  dem.quantity = "arching";
-  dem.solver = Solver::dem;
-  BenchRun run;
-  run.invocation = bench_invocation(at, dem);
-  run.inputs = bench_inputs_fingerprint(at, dem, ".");
-  run.wall_seconds = wall_seconds;
-  run.commit = commit;
-  run.results = {{"arching", {{"value", arching}}}};
-  save_bench_run(bench_run_folder(runs, at, dem), run);
-}
+using testing::lay_down_run;
 
 // The point's answer is the bisection's bracket (arches at 18 mm, flows at 48 mm) on rung L3;
 // its wall time is its three runs' (1 + 2 + 4 s) and its commit names both of theirs; asked
