@@ -143,10 +143,14 @@ ArchingVerificationCost estimate_arching_verification(const Case& c, const Desig
   const DemRunEstimate in_band = estimate_dem_hopper_run(narrower, q * std::pow(middle / w, 1.5));
   ArchingVerificationCost cost;
   cost.seconds = at_outlet.seconds + (plan.runs - 1) * in_band.seconds;
-  cost.text = "about " + format_duration(cost.seconds) + " by its estimate: the outlet's run " +
-              at_outlet.text() + ", each of the " + std::to_string(plan.runs - 1) + " more at " +
-              mm(middle) + " " + in_band.text() +
-              ", each until it empties at the reduced rate (one that arches stops sooner)";
+  const double longest = at_outlet.longest_seconds + (plan.runs - 1) * in_band.longest_seconds;
+  cost.text = "about " + format_duration(cost.seconds) +
+              " by its estimate, each run emptying at the reduced rate, at most " +
+              format_duration(longest) + " should each flow on until " +
+              format_quantity(at_outlet.run_cap, "s", 3) +
+              " after the opening (one that arches stops sooner): the outlet's run " +
+              at_outlet.text() + "; each of the " + std::to_string(plan.runs - 1) + " more at " +
+              mm(middle) + " " + in_band.text();
   return cost;
 }
 

@@ -45,7 +45,8 @@ ArchingVerificationPlan plan_arching_verification(const Case& c, const DesignRec
 
 // What the plan's DEM runs will cost by their estimate (dem_run_estimate.hpp): the design
 // outlet's run, and each of the bisection's at the band's middle (the reduced rate scaled as
-// W^1.5), every one as if it flowed until the hopper emptied (one that arches stops sooner).
+// W^1.5), every one as if it flowed until the hopper emptied (one that arches stops sooner; one
+// that trickles on to the scene's end takes up to the longest, which the text states too).
 struct ArchingVerificationCost {
   double seconds = 0.0;  // [s] on the bench machine's two cores
   std::string text;      // "about 9.1 h on 2 cores by its estimate: ..."

@@ -12,10 +12,10 @@
 namespace feedflow {
 
 std::string DemRunEstimate::text() const {
-  return "about " + format_duration(seconds) + " on " + std::to_string(kDemHopperCores) +
-         " cores (" + format_number(spheres, 3) + " spheres, " +
-         format_number((fill_time + discharge_time) / time_step / 1e6, 2) + " million steps of " +
-         format_quantity(time_step, "us", 3) + ")";
+  return "about " + format_duration(seconds) + " (at most " + format_duration(longest_seconds) +
+         ") on " + std::to_string(kDemHopperCores) + " cores: " + format_number(spheres, 3) +
+         " spheres, " + format_number((fill_time + discharge_time) / time_step / 1e6, 2) +
+         " million steps of " + format_quantity(time_step, "us", 3);
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {
@@ -42,6 +42,9 @@ DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {
   e.particle_steps =
       e.spheres * (0.5 * inserting + rain.settle_time_cap + 0.5 * e.discharge_time) / e.time_step;
   e.seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  e.run_cap = scene.default_duration;
+  e.longest_seconds = e.spheres * (0.5 * inserting + rain.settle_time_cap + e.run_cap) /
+                      e.time_step / kDemHopperParticleStepsPerSecond;
   return e;
 }
 

@@ -26,8 +26,14 @@ struct DemRunEstimate {
   double discharge_time = 0.0;  // [s] simulated after the opening
   double particle_steps = 0.0;  // the fill's, then the discharge's (the hopper emptying evenly)
   double seconds = 0.0;         // [s] wall, at kDemHopperParticleStepsPerSecond
+  // [s] wall should it flow, too slowly to empty, until the scene's end `run_cap` [s] after the
+  // opening with all its spheres (near B_c the flow slows to a trickle, as the pilot hopper's
+  // k_nc run at 31.3 mm did).
+  double longest_seconds = 0.0;
+  double run_cap = 0.0;
 
-  // "about 1.3 h on 2 cores (9724 spheres, 8.0e6 steps of 0.745 us)"
+  // "about 1 h 05 min (at most 6 h 10 min) on 2 cores: 9723 spheres, 4.8 million steps of
+  // 0.745 us"
   std::string text() const;
 };
 

@@ -34,10 +34,11 @@ TEST(DemRunEstimate, PlansThePilotHoppersMeasuredRun) {
   EXPECT_NEAR(e.fill_time, 1.08, 0.15);
   EXPECT_GT(e.seconds, 4719.0 / 1.4);
   EXPECT_LT(e.seconds, 4719.0 * 1.4);
-  EXPECT_NE(e.text().find("on 2 cores (9723 spheres"), std::string::npos) << e.text();
+  EXPECT_NE(e.text().find("on 2 cores: 9723 spheres"), std::string::npos) << e.text();
 }
 
-// Half the rate empties the hopper in twice the time; no rate at all runs to the scene's end.
+// Half the rate empties the hopper in twice the time; no rate at all runs to the scene's end,
+// and the longest keeps every sphere that long.
 TEST(DemRunEstimate, DischargeTakesTheContentOverTheRateUpToTheScenesEnd) {
   const Case c = pilot_at_45mm();
   const double q = reduced_rate(c);
@@ -46,6 +47,9 @@ TEST(DemRunEstimate, DischargeTakesTheContentOverTheRateUpToTheScenesEnd) {
   EXPECT_NEAR(half.discharge_time, 2.0 * full.discharge_time, 1e-12);
   EXPECT_GT(half.seconds, full.seconds);
   EXPECT_DOUBLE_EQ(estimate_dem_hopper_run(c, 0.0).discharge_time, 20.0);
+  // The longest: every sphere kept until the scene's end, above any discharge that empties.
+  EXPECT_DOUBLE_EQ(full.run_cap, 20.0);
+  EXPECT_GT(full.longest_seconds, estimate_dem_hopper_run(c, 0.0).seconds);
 }
 
 }  // namespace
