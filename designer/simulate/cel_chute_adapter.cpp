@@ -38,10 +38,11 @@ class CelChuteAdapter final : public CelSceneAdapter {
   explicit CelChuteAdapter(const SimulationRequest& request)
       : CelSceneAdapter(request,
                         cel::make_chute_scene(chute_of(request), scene_material(request.case_data),
-                                              cel_cell_size(request.case_data, 0.02)),
-                        0.02),
+                                              cel_cell_size(request.case_data, kCelChuteCellSize)),
+                        kCelChuteCellSize),
         chute_(chute_of(request)),
-        ramp_start_(chute_.bin_length + 2.0 * cel_cell_size(request.case_data, 0.02)) {}
+        ramp_start_(chute_.bin_length + 2.0 * cel_cell_size(request.case_data, kCelChuteCellSize)) {
+  }
 
   std::vector<TimeSeriesColumn> columns() const override {
     return {{"time", "s"}, {"kinetic_energy", "J"}, {"mass_on_grid", "kg"}, {"run_off_mass", "kg"},

@@ -10,6 +10,9 @@
 
 namespace feedflow {
 
+// [m] the chute's cells when [cel] cell_size is not given.
+inline constexpr double kCelChuteCellSize = 0.02;
+
 std::unique_ptr<SceneAdapter> cel_chute_adapter(const SimulationRequest& request);
 
 }  // namespace feedflow

@@ -25,30 +25,6 @@ double shell_friction(const Drum& drum) {
   return drum.wall_friction_angle ? std::tan(*drum.wall_friction_angle) : 0.364;
 }
 
-DemSettings drum_settings(const Case& c, const DemRanks& ranks) {
-  DemSettings s = dem_case_settings(c, ranks);
-  if (c.dem.slab_depth) s.material.particle_wall.friction = shell_friction(std::get<Drum>(c.equipment));
-  return s;
-}
-
-DrumSceneSpec drum_spec(const Case& c, const DemSettings& settings) {
-  const Drum& drum = std::get<Drum>(c.equipment);
-  DrumSceneSpec spec;
-  spec.diameter = drum.diameter;
-  spec.length = drum.length;
-  spec.fill_fraction = drum.fill_fraction;
-  spec.speed = drum.speed;
-  spec.slab_depth = c.dem.slab_depth;
-  if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
-  require_periodic_faces(c, "drum");
-  if (slab_faces_of(c) == SlabFaces::periodic && !spec.slab_depth)
-    throw InputError(c.file, "dem.slab_faces",
-                     "periodic faces need a [dem] slab_depth (without it the drum runs its full "
-                     "length between its end walls)");
-  if (spec.slab_depth) require_slab_depth(c, settings, *spec.slab_depth);
-  return spec;
-}
-
 DrumAngleWatch angle_watch(const Drum& drum) {
   const AngleWindows w = drum_angle_windows(drum.speed);
   return DrumAngleWatch(0.5 * drum.diameter, w.spin_up, w.window, w.tolerance);
@@ -59,8 +35,8 @@ class DemDrumAdapter final : public SceneAdapter {
   explicit DemDrumAdapter(const SimulationRequest& request)
       : request_(request),
         drum_(std::get<Drum>(request.case_data.equipment)),
-        settings_(drum_settings(request.case_data, request.ranks)),
-        scene_(settings_, drum_spec(request.case_data, settings_)),
+        settings_(dem_drum_settings(request.case_data, request.ranks)),
+        scene_(settings_, dem_drum_spec(request.case_data, settings_)),
         watch_(angle_watch(drum_)) {}
 
   std::string what() const override { return "the drum"; }
@@ -112,7 +88,7 @@ class DemDrumAdapter final : public SceneAdapter {
     const Case& c = request_.case_data;
     run.label = "DEM drum";
     run.origin = run.sample_origin = scene_.rotation_start();
-    run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRotation;
+    run.duration = request_.end_time ? *request_.end_time : dem_drum_rotation(c);
     run.sample_interval = kSampleInterval;
     run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
     run.sample = [this] {
@@ -248,6 +224,35 @@ class DemDrumAdapter final : public SceneAdapter {
 };
 
 }  // namespace
+
+DemSettings dem_drum_settings(const Case& c, const DemRanks& ranks) {
+  DemSettings s = dem_case_settings(c, ranks);
+  if (c.dem.slab_depth)
+    s.material.particle_wall.friction = shell_friction(std::get<Drum>(c.equipment));
+  return s;
+}
+
+DrumSceneSpec dem_drum_spec(const Case& c, const DemSettings& settings) {
+  const Drum& drum = std::get<Drum>(c.equipment);
+  DrumSceneSpec spec;
+  spec.diameter = drum.diameter;
+  spec.length = drum.length;
+  spec.fill_fraction = drum.fill_fraction;
+  spec.speed = drum.speed;
+  spec.slab_depth = c.dem.slab_depth;
+  if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
+  require_periodic_faces(c, "drum");
+  if (slab_faces_of(c) == SlabFaces::periodic && !spec.slab_depth)
+    throw InputError(c.file, "dem.slab_faces",
+                     "periodic faces need a [dem] slab_depth (without it the drum runs its full "
+                     "length between its end walls)");
+  if (spec.slab_depth) require_slab_depth(c, settings, *spec.slab_depth);
+  return spec;
+}
+
+double dem_drum_rotation(const Case& c) {
+  return c.dem.end_time ? *c.dem.end_time : kDefaultRotation;
+}
 
 std::unique_ptr<SceneAdapter> dem_drum_adapter(const SimulationRequest& request) {
   return std::make_unique<DemDrumAdapter>(request);

@@ -7,10 +7,19 @@
 // 20-50 over the run (dem_snapshot_interval), each on a row of the series.
 #include <memory>
 
+#include "designer/case/case.hpp"
 #include "designer/simulate/scene_adapter.hpp"
+#include "fullsim/dem/scene/drum_scene.hpp"
 
 namespace feedflow {
 
 std::unique_ptr<SceneAdapter> dem_drum_adapter(const SimulationRequest& request);
+
+// The scene the adapter builds for a drum case: its DEM settings (a slab's shell takes the case's
+// wall friction), its spec (throws InputError naming the key for a case it cannot build), and the
+// rotation it runs at most when no --time is given [s] (dem.end_time, else the seed's 10 s).
+DemSettings dem_drum_settings(const Case& c, const DemRanks& ranks = DemRanks::one());
+DrumSceneSpec dem_drum_spec(const Case& c, const DemSettings& settings);
+double dem_drum_rotation(const Case& c);
 
 }  // namespace feedflow

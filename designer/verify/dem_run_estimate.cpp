@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "designer/simulate/dem_drum_adapter.hpp"
 #include "designer/simulate/dem_hopper_scene.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/units/quantity_format.hpp"
@@ -12,26 +13,54 @@
 namespace feedflow {
 
 std::string DemRunEstimate::text() const {
-  return "about " + format_duration(seconds) + " (at most " + format_duration(longest_seconds) +
-         ") on " + std::to_string(kDemHopperCores) + " cores: " + format_number(spheres, 3) +
+  return "about " + format_duration(seconds) +
+         (longest_seconds > 1.01 * seconds ? " (at most " + format_duration(longest_seconds) + ")"
+                                           : std::string()) +
+         " on " + std::to_string(kDemHopperCores) + " cores: " + format_number(spheres, 3) +
          " spheres, " + format_number((fill_time + discharge_time) / time_step / 1e6, 2) +
          " million steps of " + format_quantity(time_step, "us", 3);
+}
+
+namespace {
+
+// The stable step of `engine`'s law for spheres of `radius`: one sphere in `rain`'s region
+// prepares it.
+double stable_step(DemEngine& engine, const RainFillSettings& rain, double radius, double density) {
+  engine.insert_particle(0.5 * (rain.region_lower + rain.region_upper), radius, density, 0.0,
+                         Vec3::Zero());
+  std::ostringstream plan;
+  engine.prepare(plan);
+  return engine.time_step();
+}
+
+double sphere_mass(double radius, double density) {
+  return density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+}
+
+}  // namespace
+
+DemRunEstimate estimate_dem_drum_run(const Case& c) {
+  const DemSettings settings = dem_drum_settings(c);
+  DrumScene scene(settings, dem_drum_spec(c, settings));
+  const RainFillSettings rain = scene.rain();
+  DemRunEstimate e;
+  e.time_step = stable_step(scene.engine(), rain, rain.radius, rain.density);
+  e.spheres = std::floor(rain.target_mass / sphere_mass(rain.radius, rain.density));
+  const double inserting = rain.target_mass / rain.mass_rate;
+  e.fill_time = inserting + rain.settle_time_cap;
+  e.discharge_time = e.run_cap = dem_drum_rotation(c);
+  e.particle_steps = e.spheres * (0.5 * inserting + rain.settle_time_cap + e.run_cap) / e.time_step;
+  e.seconds = e.longest_seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  return e;
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {
   const DemHopperScene scene = hopper_scene_from_case(c);
   const RainFillSettings rain = scene.rain();
-  const double r = scene.radius();
-  // The step is the stable one of the law and the spheres: one sphere prepares it.
   DemEngine probe = hopper_scene_structure(scene);
-  probe.insert_particle(0.5 * (rain.region_lower + rain.region_upper), r, scene.density, 0.0,
-                        Vec3::Zero());
-  std::ostringstream plan;
-  probe.prepare(plan);
   DemRunEstimate e;
-  const double sphere_mass = scene.density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
-  e.spheres = std::floor(rain.target_mass / sphere_mass);
-  e.time_step = probe.time_step();
+  e.time_step = stable_step(probe, rain, scene.radius(), scene.density);
+  e.spheres = std::floor(rain.target_mass / sphere_mass(scene.radius(), scene.density));
   const double inserting = rain.target_mass / rain.mass_rate;
   e.fill_time = inserting + rain.settle_time_cap;
   const double real_content = rain.target_mass * scene.scale();

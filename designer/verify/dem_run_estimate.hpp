@@ -13,9 +13,10 @@
 
 namespace feedflow {
 
-// [particle-steps/s] the pilot hopper's DEM run at 45 mm (hysteretic_nonlinear2 + k_nc, 7768
-// spheres, 0.35 m fill) kept from its fill to its emptying, on the two threads of the bench
-// machine, 2026-12-06: 3534 s at 6.38e6 and 1185 s at 7.71e6 (its performance blocks).
+// [particle-steps/s] (drums are planned at the same rate) the pilot hopper's DEM run at 45 mm
+// (hysteretic_nonlinear2 + k_nc, 7768 spheres, 0.35 m fill) kept from its fill to its emptying, on
+// the two threads of the bench machine, 2026-12-06: 3534 s at 6.38e6 and 1185 s at 7.71e6 (its
+// performance blocks).
 constexpr double kDemHopperParticleStepsPerSecond = 6.7e6;
 constexpr int kDemHopperCores = 2;
 
@@ -36,6 +37,11 @@ struct DemRunEstimate {
   // 0.745 us"
   std::string text() const;
 };
+
+// The estimate for one DEM run of the drum case `c`, to the end of its rotation (dem.end_time or
+// the seed's 10 s; a run whose angle settles sooner stops sooner): all its spheres turn all the
+// while, so `seconds` and `longest_seconds` are one. Throws InputError as the scene does.
+DemRunEstimate estimate_dem_drum_run(const Case& c);
 
 // The estimate for one DEM run of the hopper case `c` (its [dem] settings as the run will have
 // them), whose reduced discharge rate is `reduced_rate` [kg/s of the real hopper]. Throws

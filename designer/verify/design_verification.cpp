@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include "designer/bench/bench_plan.hpp"
 #include "designer/simulate/solver_choice.hpp"
 #include "designer/verify/arching_verification.hpp"
+#include "designer/verify/cel_chute_estimate.hpp"
 #include "designer/verify/dem_run_estimate.hpp"
 #include "designer/verify/rate_verification.hpp"
 #include "designer/verify/simulation_verification.hpp"
@@ -33,6 +35,17 @@ bool marginal_on(const DesignRecord& r, const std::string& quantity) {
   return false;
 }
 
+std::string quoted(const std::string& a) {
+  return a.find(' ') == std::string::npos ? a : "\"" + a + "\"";
+}
+
+// "feedflow design CASE --set ...": this check as typed, to name the command that settles it.
+std::string this_check(const VerificationRequest& args) {
+  std::string again = "feedflow design " + quoted(args.case_file);
+  for (const auto& set : args.sets) again += " --set " + quoted(set);
+  return again;
+}
+
 // A --budget that holds `seconds` of estimated runs with a fifth to spare: "13h", "40min".
 std::string budget_holding(double seconds) {
   const double spared = 1.2 * seconds;
@@ -58,30 +71,66 @@ bool dem_verification(const VerificationRequest& args, const Case& c, const Hopp
   return true;
 }
 
-// --verify on a drum or a chute: one simulation on the rung asked by name; its answers stand beside
-// the reduced ones. `auto` runs none: with no measured wall time for these scenes (the shipped
-// bench table has no DEM drum or chute point) no run can be planned within a budget (the seed's
-// DEM drum is about 14 h), so a MARGINAL verdict names the command on the seed's rung (particles
-// for drums, continuum for chutes). Returns false when Ctrl-C stopped the run.
+// What a simulation of a drum on the particle rung or a chute on the continuum rung (on `cell`
+// [m], else the case's) will cost, in words, and its seconds; none when it cannot be estimated
+// (the reason in the words).
+std::pair<std::optional<double>, std::string> scene_estimate(const Case& c, Solver solver,
+                                                             std::optional<double> cell) {
+  try {
+    if (solver == Solver::dem && c.kind() == EquipmentKind::drum) {
+      const DemRunEstimate e = estimate_dem_drum_run(c);
+      return {e.seconds, e.text() + ", to the end of its " + format_quantity(e.run_cap, "s", 3) +
+                             " of rotation (a run whose angle settles sooner stops sooner)"};
+    }
+    if (solver == Solver::cel && c.kind() == EquipmentKind::chute)
+      if (auto e = estimate_cel_chute_run(c, cell)) return {e->seconds, e->text};
+    return {std::nullopt, "its wall time cannot be estimated"};
+  } catch (const InputError& e) {
+    return {std::nullopt, "not with this case: " + std::string(e.what())};
+  }
+}
+
+// --verify on a drum or a chute: one simulation on the rung asked by name, or by auto on the
+// seed's rung (particles for drums; the continuum for chutes, on the cheapest CEL level the
+// shipped bench table shows within the tolerance) when the verdict is MARGINAL and its estimate
+// fits the budget; its answers stand beside the reduced ones. Otherwise a MARGINAL verdict names
+// the command on the seed's rung with its estimate. Returns false when Ctrl-C stopped the run.
 bool scene_verification(const VerificationRequest& args, const Case& c,
                         const std::filesystem::path& runs, DesignRecord& record) {
   const Solver seed_rule = c.kind() == EquipmentKind::drum ? Solver::dem : Solver::cel;
+  Solver solver = seed_rule;
+  std::vector<std::string> sets = args.sets;
   if (args.mode == "off" || args.mode == "auto") {
-    if (record.verdict.status == VerdictStatus::marginal)
+    if (record.verdict.status != VerdictStatus::marginal) return true;
+    const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
+    const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
+    std::string refused;  // why auto runs none
+    std::optional<double> cell;
+    if (seed_rule == Solver::cel) cell = chute_cell_within(tolerance, refused);
+    std::string command = this_check(args);
+    if (cell) command += " --set cel.cell_size=" + millimetres_setting(*cell);
+    const auto [seconds, cost] = scene_estimate(c, seed_rule, cell);
+    if (refused.empty() && seconds && *seconds > budget)
+      refused = "beyond the budget of " + format_duration(budget);
+    if (args.mode == "off" || !seconds || !refused.empty()) {
       record.verdict.reasons.push_back(
           "to settle it on the " +
-          std::string(seed_rule == Solver::dem ? "particle" : "continuum") +
-          " rung: feedflow design " + args.case_file + " --verify " + to_string(seed_rule) +
-          " (one simulation as feedflow simulate runs it; " +
-          (args.mode == "auto" ? "not run by auto: " : "") +
-          "its wall time is not in the shipped bench table, so no budget can plan it; its plan "
-          "line states the particles or cells and the steps)");
-    return true;
+          std::string(seed_rule == Solver::dem ? "particle" : "continuum") + " rung: " + command +
+          " --verify " + to_string(seed_rule) +
+          (seconds ? " --budget " + budget_holding(*seconds) : std::string()) +
+          " (one simulation as feedflow simulate runs it, " + cost +
+          (args.mode == "auto" && !refused.empty() ? "; not run by auto: " + refused
+                                                   : std::string()) +
+          ")");
+      return true;
+    }
+    if (cell) sets.push_back("cel.cell_size=" + millimetres_setting(*cell));
+  } else {
+    solver = parse_solver(args.mode);
   }
-  const Solver solver = parse_solver(args.mode);
   install_interrupt_handler();
   const SimulationVerification v =
-      verify_by_simulation(args.case_file, args.sets, solver, runs, args.log);
+      verify_by_simulation(args.case_file, sets, solver, runs, args.log);
   if (v.run.status == "interrupted") return false;
   apply_simulation_verification(c, v, record);
   if (v.run.done()) record.simulation_runs.push_back(std::filesystem::absolute(v.folder).string());
@@ -98,11 +147,7 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
   const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
   const bool rate_marginal = marginal_on(record, "mass_flow_rate");
-  const auto quoted = [](const std::string& a) {
-    return a.find(' ') == std::string::npos ? a : "\"" + a + "\"";
-  };
-  std::string again = "feedflow design " + quoted(args.case_file);  // this check, as typed
-  for (const auto& set : args.sets) again += " --set " + quoted(set);
+  const std::string again = this_check(args);
   if (marginal_on(record, "critical_outlet_width") ||
       marginal_on(record, "mechanical_arching_width")) {
     // The continuum cannot arch: the particle rung verifies arching, asked for (dem) or, within

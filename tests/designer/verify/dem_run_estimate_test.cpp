@@ -52,5 +52,22 @@ TEST(DemRunEstimate, DischargeTakesTheContentOverTheRateUpToTheScenesEnd) {
   EXPECT_GT(full.longest_seconds, estimate_dem_hopper_run(c, 0.0).seconds);
 }
 
+// A drum turns all its spheres for its whole rotation (the seed's 10 s, or dem.end_time): on the
+// seed's drum as an 18 mm slab with the seed's law, ten more seconds cost spheres x 10 s / dt
+// more particle-steps, and the run's estimate is also its most.
+TEST(DemRunEstimate, ADrumTurnsAllItsSpheresForItsRotation) {
+  const auto drum = [](const char* end) {
+    return load_case("cases/rotating_drum_20rpm.toml",
+                     std::vector<SetOverride>{{"dem.slab_depth", "18mm"}, {"dem.end_time", end}});
+  };
+  const DemRunEstimate ten = estimate_dem_drum_run(drum("10s")),
+                       twenty = estimate_dem_drum_run(drum("20s"));
+  EXPECT_NEAR(ten.time_step, 7.452e-7, 0.001 * 7.452e-7);  // the seed's law, as in the hopper
+  EXPECT_DOUBLE_EQ(ten.run_cap, 10.0);
+  EXPECT_DOUBLE_EQ(ten.seconds, ten.longest_seconds);
+  EXPECT_NEAR(twenty.particle_steps - ten.particle_steps, ten.spheres * 10.0 / ten.time_step,
+              1e-9 * twenty.particle_steps);
+}
+
 }  // namespace
 }  // namespace feedflow
