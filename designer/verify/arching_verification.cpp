@@ -26,27 +26,6 @@ bool contacts_pull(const Case& c) {
 
 std::string mm(double metres) { return format_quantity(metres, "mm", 4); }
 
-// The DEM run of the case at outlet width `w` (the scene's own end: until it arches, empties or
-// its rate has converged) as a bench point, so a second call reads it back.
-BenchQuestion question_at(const std::string& case_file, const std::vector<std::string>& sets,
-                          double w) {
-  BenchQuestion q;
-  q.id = "verify_arching";
-  q.case_file = case_file;
-  q.sets = sets;
-  q.sets.push_back("hopper.outlet_width=" + millimetres_setting(w));
-  return q;
-}
-
-BenchPoint dem_point() {
-  BenchPoint p;
-  p.setting = "DEM";
-  p.rung = "L3";
-  p.quantity = "arching";
-  p.solver = Solver::dem;
-  return p;
-}
-
 std::optional<OutletOutcome> outcome_of(const BenchRun& run) {
   if (!run.done() || !run.results.contains("arching") ||
       !run.results["arching"]["value"].is_string())
@@ -86,6 +65,25 @@ std::string result_key(const Case& c, const ArchingVerificationPlan& plan) {
 }
 
 }  // namespace
+
+BenchQuestion arching_run_question(const std::string& case_file,
+                                   const std::vector<std::string>& sets, double w) {
+  BenchQuestion q;
+  q.id = "verify_arching";
+  q.case_file = case_file;
+  q.sets = sets;
+  q.sets.push_back("hopper.outlet_width=" + millimetres_setting(w));
+  return q;
+}
+
+BenchPoint arching_run_point() {
+  BenchPoint p;
+  p.setting = "DEM";
+  p.rung = "L3";
+  p.quantity = "arching";
+  p.solver = Solver::dem;
+  return p;
+}
 
 std::optional<Case> with_cohesive_contacts(const Case& c) {
   if (!c.dem.cohesion.empty()) return std::nullopt;
@@ -163,9 +161,9 @@ ArchingVerification verify_arching(const std::string& case_file,
   const auto judge_at = [&](double w) -> std::optional<OutletOutcome> {
     if (progress) *progress << "verify: DEM at outlet " << mm(w) << " ..." << std::flush;
     bool made = false;
-    const BenchQuestion q = question_at(case_file, sets, w);
-    const BenchRun run =
-        run_or_read_back(q, dem_point(), ".", bench_run_folder(runs_folder, q, dem_point()), made);
+    const BenchQuestion q = arching_run_question(case_file, sets, w);
+    const BenchRun run = run_or_read_back(
+        q, arching_run_point(), ".", bench_run_folder(runs_folder, q, arching_run_point()), made);
     if (made) v.wall_seconds += run.wall_seconds;
     v.longest_run = std::max(v.longest_run, run.wall_seconds);  // a run read back keeps its time
     const auto outcome = outcome_of(run);
@@ -176,16 +174,16 @@ ArchingVerification verify_arching(const std::string& case_file,
     if (!outcome) v.status = run.done() ? "the DEM run gave no arching answer" : run.status;
     return outcome;
   };
-  v.design_run =
-      bench_run_folder(runs_folder, question_at(case_file, sets, h.outlet_width), dem_point());
+  v.design_run = bench_run_folder(
+      runs_folder, arching_run_question(case_file, sets, h.outlet_width), arching_run_point());
   v.at_design = judge_at(h.outlet_width);
   if (!v.at_design) return v;
   // The bisection's runs already kept cost nothing: those it would read back before its first
   // new one.
   const auto kept_outcome = [&](double w) -> std::optional<OutletOutcome> {
-    const BenchQuestion q = question_at(case_file, sets, w);
-    const auto saved =
-        saved_run_of(q, dem_point(), ".", bench_run_folder(runs_folder, q, dem_point()));
+    const BenchQuestion q = arching_run_question(case_file, sets, w);
+    const auto saved = saved_run_of(q, arching_run_point(), ".",
+                                    bench_run_folder(runs_folder, q, arching_run_point()));
     return saved ? outcome_of(*saved) : std::nullopt;
   };
   const WidthBisection kept =

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "designer/bench/bench_plan.hpp"
 #include "designer/case/case.hpp"
 #include "designer/verify/width_bisection.hpp"
 #include "models/core/design_record.hpp"
@@ -27,6 +28,13 @@ namespace feedflow {
 // particle rung, when its normal law has a K_nc branch and the case names no cohesion of its
 // own; nullopt otherwise (the case stays as written).
 std::optional<Case> with_cohesive_contacts(const Case& c);
+
+// The DEM run the verification makes at outlet width `w` [m] (the scene's own end: until it
+// arches, empties or its rate has converged), as a bench question and point so a second call
+// reads it back: the case as typed with its `sets` and the width.
+BenchQuestion arching_run_question(const std::string& case_file,
+                                   const std::vector<std::string>& sets, double w);
+BenchPoint arching_run_point();
 
 struct ArchingVerificationPlan {
   std::string quantity;  // "critical_outlet_width" (cohesive law) or "mechanical_arching_width"

@@ -99,9 +99,9 @@ TEST(ArchingVerification, TheBudgetCountsOnlyTheRunsNotKept) {
   const std::filesystem::path runs =
       std::filesystem::temp_directory_path() / ("feedflow_kept_runs_" + std::to_string(::getpid()));
   std::filesystem::remove_all(runs);
-  testing::lay_down_run(q, BenchPoint{}, runs, "10mm", "arched", 60.0, "aaaa");
-  testing::lay_down_run(q, BenchPoint{}, runs, "48mm", "flowing", 50.0, "aaaa");
-  testing::lay_down_run(q, BenchPoint{}, runs, "18mm", "arched", 40.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, runs, 0.010, "arched", 60.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, runs, 0.048, "flowing", 50.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, runs, 0.018, "arched", 40.0, "aaaa");
   const std::string case_file =
       (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
   const Case c = load_case(case_file, std::vector<SetOverride>{{"hopper.outlet_width", "10mm"}});

@@ -5,33 +5,28 @@
 #include <string>
 
 #include "designer/bench/bench_run.hpp"
+#include "designer/verify/arching_verification.hpp"
 
 namespace feedflow::testing {
 
-// The run the verification makes at outlet `width` ("48mm") of the case `q` with the point's
-// settings `p.sets` (its case file relative to the source tree), saved as it saves it.
+// The run the verification makes at outlet `width` [m] of the case `q` with the point's settings
+// `p.sets` (its case file relative to the source tree), saved as it saves it.
 inline void lay_down_run(const BenchQuestion& q, const BenchPoint& p,
-                         const std::filesystem::path& runs, const std::string& width,
+                         const std::filesystem::path& runs, double width,
                          const std::string& arching, double wall_seconds,
                          const std::string& commit) {
-  BenchQuestion at = q;
-  at.id = "verify_arching";
-  at.case_file =
-      (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
-  at.sets.insert(at.sets.end(), p.sets.begin(), p.sets.end());
-  at.sets.push_back("hopper.outlet_width=" + width);
-  BenchPoint dem;
-  dem.setting = "DEM";
-  dem.rung = "L3";
-  dem.quantity = "arching";
-  dem.solver = Solver::dem;
+  std::vector<std::string> sets = q.sets;
+  sets.insert(sets.end(), p.sets.begin(), p.sets.end());
+  const BenchQuestion at = arching_run_question(
+      (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string(), sets,
+      width);
   BenchRun run;
-  run.invocation = bench_invocation(at, dem);
-  run.inputs = bench_inputs_fingerprint(at, dem, ".");
+  run.invocation = bench_invocation(at, arching_run_point());
+  run.inputs = bench_inputs_fingerprint(at, arching_run_point(), ".");
   run.wall_seconds = wall_seconds;
   run.commit = commit;
   run.results = {{"arching", {{"value", arching}}}};
-  save_bench_run(bench_run_folder(runs, at, dem), run);
+  save_bench_run(bench_run_folder(runs, at, arching_run_point()), run);
 }
 
 }  // namespace feedflow::testing

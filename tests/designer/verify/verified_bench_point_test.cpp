@@ -32,9 +32,9 @@ TEST(VerifiedBenchPoint, AnswersWithTheBisectionsBracketAndItsRunsTime) {
   const fs::path folder =
       fs::temp_directory_path() / ("feedflow_verified_point_" + std::to_string(::getpid()));
   fs::remove_all(folder);
-  lay_down_run(q, p, folder / "verify", "10mm", "arched", 1.0, "aaaa");
-  lay_down_run(q, p, folder / "verify", "48mm", "flowing", 2.0, "bbbb");
-  lay_down_run(q, p, folder / "verify", "18mm", "arched", 4.0, "aaaa");
+  lay_down_run(q, p, folder / "verify", 0.010, "arched", 1.0, "aaaa");
+  lay_down_run(q, p, folder / "verify", 0.048, "flowing", 2.0, "bbbb");
+  lay_down_run(q, p, folder / "verify", 0.018, "arched", 4.0, "aaaa");
   bool made = false;
   const BenchRun run = run_or_read_back_verified(q, p, FEEDFLOW_SOURCE_DIR, folder, made);
   ASSERT_TRUE(run.done()) << run.status;
