@@ -174,6 +174,12 @@ Case load_case_table(toml::table root, const std::string& path,
     c.description = read_case_text(*case_table, "description", path);
   }
   if (c.name.empty()) c.name = fs::path(path).stem().string();
+  if (!overrides.empty()) {  // the file's words no longer describe what was set over them
+    std::string changed;
+    for (const auto& o : overrides)
+      changed += (changed.empty() ? "" : ", ") + o.key + " = " + o.value;
+    c.description += (c.description.empty() ? "" : "; ") + std::string("as changed: ") + changed;
+  }
 
   std::vector<std::string_view> present;
   for (const auto key : kEquipmentKeys)

@@ -90,6 +90,18 @@ TEST_F(TempCase, EveryShippedCaseLoads) {
   EXPECT_EQ(count, 6);
 }
 
+// A case loaded with overrides says so after its own words, which describe the file's values
+// ("60 mm slot"), not the ones set over them.
+TEST_F(TempCase, OverridesFollowTheDescription) {
+  const Case c = load_case(
+      "cases/pilot_hopper.toml",
+      std::vector<SetOverride>{{"hopper.outlet_width", "45mm"}, {"hopper.fill_height", "0.35m"}});
+  EXPECT_TRUE(c.description.starts_with(load_case("cases/pilot_hopper.toml").description + "; "));
+  EXPECT_TRUE(
+      c.description.ends_with("as changed: hopper.outlet_width = 45mm, hopper.fill_height = 0.35m"))
+      << c.description;
+}
+
 // The inclined planes and the drum carry the seed's geometry in SI.
 TEST_F(TempCase, ChuteAndDrumCasesInSi) {
   const auto chute = std::get<Chute>(load_case("cases/inclined_plane_37.toml").equipment);
