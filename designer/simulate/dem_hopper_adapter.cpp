@@ -124,6 +124,14 @@ class DemHopperAdapter final : public SceneAdapter {
                                                        scene_.bands, order.label().c_str(), kMassFlowFifoIndex),
                                                 Rung::L3, ""});
     results.emplace_back("discharged_mass", number(discharged * scale, "kg", std::nullopt, std::nullopt, scene_.model_text()));
+    // The rate scales with the bed's density, which the spheres' packing sets, not the
+    // material's bulk density the continuum and the reduced rung fill at.
+    results.emplace_back(
+        "fill_bulk_density",
+        number(fill_mass() / scene_.filled_volume(), "kg/m^3", std::nullopt, std::nullopt,
+               format("the DEM fill at the opening over the volume below the fill height (the "
+                      "material's bulk density: %.4g kg/m^3; the rate scales with the bed's)",
+                      request_.case_data.material.bulk.density)));
     results.emplace_back("simulated_time_after_opening",
                          number(engine_->time() - t_open, "s", std::nullopt, std::nullopt,
                                 run.end == RunEnd::stopped ? run.stop_reason : "the run's duration"));

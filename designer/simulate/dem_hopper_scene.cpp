@@ -15,6 +15,10 @@ double DemHopperScene::scale() const {
   return 1.0 / std::get<ConicalHopper>(geometry).share();
 }
 
+double DemHopperScene::filled_volume() const {
+  return std::visit([](const auto& g) { return g.fill_mass(1.0, 1.0); }, geometry);
+}
+
 double DemHopperScene::radius() const {
   return std::visit([](const auto& g) { return g.radius; }, geometry);
 }

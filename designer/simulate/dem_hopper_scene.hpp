@@ -43,6 +43,9 @@ struct DemHopperScene {
   double radius() const;             // of the spheres [m]
   double outlet_size() const;        // W or D [m]
   double transition_height() const;  // the converging section's top above the outlet [m]
+  // The simulated part's volume below the fill's trim height [m^3] (its fill over it: the bed's
+  // bulk density).
+  double filled_volume() const;
   // The free-fall rate scale of the simulated part's outlet (rho W sqrt(g W) per slab depth,
   // rho pi/4 D^2 sqrt(g D) per sector share) [kg/s].
   double outlet_rate_scale(double bulk_density) const;
