@@ -173,6 +173,8 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
                      ") do not pull, so they verify interlocking arches, not the cohesive B_c";
       const ArchingVerificationCost cost = estimate_arching_verification(particles, record, plan);
       estimated = cost.seconds;
+      if (args.width_tolerance != VerificationRequest{}.width_tolerance)
+        command += " --width-tolerance " + quoted(args.width_tolerance);
       command += " --budget " + budget_holding(cost.seconds);
       how = " (" + std::to_string(plan.runs) + " DEM runs with the " + plan.law +
             " law: the outlet, then a bisection on the width to " + args.width_tolerance + "; " +

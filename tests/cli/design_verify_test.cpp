@@ -51,6 +51,9 @@ TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
            "design.required_throughput=3.7kg/s --set dem.cohesion=k_nc --verify dem --budget "));
   EXPECT_TRUE(said(asked, "h (8 DEM runs with the hysteretic_nonlinear2 + k_nc cohesion law"));
   EXPECT_TRUE(said(asked, "by its estimate, each run emptying at the reduced rate, at most "));
+  // A width tolerance of the user's own goes into the command (fewer runs: 1 + 2 + 4).
+  EXPECT_TRUE(said(design_json(dir, marginal + " --width-tolerance 2.5mm"),
+                   "--verify dem --width-tolerance 2.5mm --budget "));
   const auto refused = design_json(dir, marginal + " --verify auto --budget 2min");
   EXPECT_TRUE(said(refused, "mass flow rate not verified: no plan meets 10 % within 2 min"));
   EXPECT_TRUE(said(refused, "not run by auto: beyond the budget of 2 min 00 s"));
