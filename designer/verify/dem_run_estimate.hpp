@@ -1,12 +1,13 @@
 #pragma once
-// What a DEM hopper run of a case will cost, before it is made: the plan of `--verify` on the
-// particle rung, and the wall time a MARGINAL verdict quotes beside the command that would
+// What a DEM run of a hopper or a drum case will cost, before it is made: the plan of `--verify`
+// on the particle rung, and the wall time a MARGINAL verdict quotes beside the command that would
 // settle it. The scene says the spheres (the fill's target mass over one sphere's: an upper
 // bound, the fill stops at its height), the time step (the stable one of the case's contact
-// law) and the simulated times (inserting, settling at its cap, and a discharge at the reduced
-// rate until the hopper is empty, capped by the scene's end); the wall time is their
-// particle-steps at the rate the DEM hopper ran at on two cores of the bench machine. A run
-// that arches stops sooner; one whose grains flow slower than the reduced rate takes longer.
+// law) and the simulated times (inserting, settling at its cap, then a hopper's discharge at the
+// reduced rate until it is empty, capped by the scene's end, or a drum's whole rotation); the
+// wall time is their particle-steps at the rate the DEM hopper ran at on two cores of the bench
+// machine. A hopper run that arches stops sooner; one whose grains flow slower than the reduced
+// rate takes longer (the pilot's emptied 18-23 % later than estimated, RECORD.md).
 #include <string>
 
 #include "designer/case/case.hpp"
