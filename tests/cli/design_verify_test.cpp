@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../designer/verify/kept_runs.hpp"
 #include "run_feedflow.hpp"
 
 namespace fs = std::filesystem;
@@ -129,7 +130,9 @@ TEST(DesignVerifyDem, DesignOutletObservedAndBisectionRefusedBeyondTheBudget) {
 // (the cohesive B_c marginal) auto names the command and says why it ran none. At 10 mm the
 // interlocking check is marginal (5.37-14.3 mm), which they can settle: 1 s holds none of the
 // three runs' estimated 11 s, so none is made; 5 min holds them, and the outlet is observed to
-// arch on rung L3 with the spheres' interlocking width bracketed beside the reduced one.
+// arch on rung L3 with the spheres' interlocking width bracketed beside the reduced one. The
+// bisection's two widths (48 mm flows, 18 mm arches, as a DEM run measured them) are laid down
+// as kept runs, so the test makes the outlet's run only.
 TEST(DesignVerifyDem, AutoRunsTheParticleRungWhenItAnswersWithinTheBudget) {
   const fs::path dir = twin_folder();
   const auto cohesive =
@@ -142,6 +145,11 @@ TEST(DesignVerifyDem, AutoRunsTheParticleRungWhenItAnswersWithinTheBudget) {
   EXPECT_TRUE(said(short_budget, "not run by auto: beyond the budget of 1 s"));
   EXPECT_EQ(short_budget["results"]["arching"]["rung"], "L0");
   EXPECT_FALSE(fs::exists(dir / "out" / "dem_hopper_twin_verify"));
+  const fs::path kept = dir / "out" / "dem_hopper_twin_verify";
+  feedflow::testing::lay_down_run("twin.toml", {"hopper.outlet_width=10mm"}, dir, kept, 0.048,
+                                  "flowing", 2.1, "");
+  feedflow::testing::lay_down_run("twin.toml", {"hopper.outlet_width=10mm"}, dir, kept, 0.018,
+                                  "arched", 8.7, "");
   const auto j = design_json(dir, interlocking + " --budget 5min", "twin.toml");
   EXPECT_EQ(j["results"]["arching"]["rung"], "L3");
   EXPECT_EQ(j["results"]["arching"]["value"], "arched");
