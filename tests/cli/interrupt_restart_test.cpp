@@ -125,9 +125,11 @@ TEST_F(InterruptRestart, CelHopperAnyPhase) {
   EXPECT_GE(interrupted_runs_match(dir_, scene, "0.3s", {0.1, 0.5, 0.85}).any, 1);
 }
 
-// The DEM drum twin: interrupted twice while filling (the fill continues from its checkpoint)
-// and twice while turning (the fill takes about half the wall time of a 1 s run).
-TEST_F(InterruptRestart, DemDrumAnyPhase) {
+// LONG (about 50 s): the DEM drum twin: interrupted twice while filling (the fill continues from
+// its checkpoint) and twice while turning (the fill takes about half the wall time of a 1 s run).
+// Fast counterparts: DemHopperAnyPhase (a DEM fill and run cut by the signal and continued) and
+// SimulateDem.DrumRestartContinuesTheSameSeries (a turning drum continued to the same bits).
+TEST_F(InterruptRestart, LONG_DemDrumAnyPhase) {
   const std::string scene =
       "simulate cases/rotating_drum_20rpm.toml --solver dem --set dem.slab_depth=18mm --set dem.normal_law=hertz "
       "--set material.dem.particle.radius=3mm";
