@@ -130,6 +130,26 @@ std::string file_name_friendly(std::string text) {
 
 std::string point_id(const BenchPoint& point) { return file_name_friendly(point.rung + "_" + point.setting); }
 
+BenchQuestion drum_question(const std::string& rpm, bool regime) {
+  BenchQuestion q{std::string("drum_") + (regime ? "regime_" : "angle_") + rpm + "rpm",
+                  std::string("Rotating drum at ") + rpm +
+                      " rpm: " + (regime ? "bed regime" : "dynamic angle of repose"),
+                  "cases/rotating_drum_20rpm.toml",
+                  {"drum.speed=" + rpm + "rpm"},
+                  regime,
+                  {},
+                  {},
+                  {}};
+  const std::string quantity = regime ? "regime" : "dynamic_angle_of_repose";
+  add_design_point(q, quantity, "L0");
+  add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});
+  add_dem_points(q, quantity, "18mm");  // the default is the seed's whole 3D drum
+  if (!regime)
+    for (auto& p : q.points)
+      if (p.solver) p.interval_key = interval_key(quantity);
+  return q;
+}
+
 std::vector<BenchQuestion> seed_bench_questions() {
   std::vector<BenchQuestion> questions;
   constexpr double kHopperTime = 1.0;  // [s] after the opening: the rate's batch means settle
@@ -203,22 +223,8 @@ std::vector<BenchQuestion> seed_bench_questions() {
     questions.push_back(std::move(q));
   }
 
-  for (const char* rpm : {"10", "20", "50"}) {
-    for (bool regime : {false, true}) {
-      BenchQuestion q{std::string("drum_") + (regime ? "regime_" : "angle_") + rpm + "rpm",
-                      std::string("Rotating drum at ") + rpm + " rpm: " +
-                          (regime ? "bed regime" : "dynamic angle of repose"),
-                      "cases/rotating_drum_20rpm.toml", {std::string("drum.speed=") + rpm + "rpm"}, regime, {}, {}, {}};
-      const std::string quantity = regime ? "regime" : "dynamic_angle_of_repose";
-      add_design_point(q, quantity, "L0");
-      add_cel_points(q, quantity, std::nullopt, {72.5 * kMm, "the drum's radius"});
-      add_dem_points(q, quantity, "18mm");  // the default is the seed's whole 3D drum
-      if (!regime)
-        for (auto& p : q.points)
-          if (p.solver) p.interval_key = interval_key(quantity);
-      questions.push_back(std::move(q));
-    }
-  }
+  for (const char* rpm : {"10", "20", "50"})
+    for (bool regime : {false, true}) questions.push_back(drum_question(rpm, regime));
   return questions;
 }
 

@@ -82,4 +82,8 @@ std::string point_id(const BenchPoint& point);
 // The questions of the seed's scenes with all their points (pilot hopper, inclined plane, drum).
 std::vector<BenchQuestion> seed_bench_questions();
 
+// The seed drum (cases/rotating_drum_20rpm.toml) at `rpm` ("10", "12.5"): its angle of repose
+// or its regime, on every rung and setting, as the bench asks it.
+BenchQuestion drum_question(const std::string& rpm, bool regime);
+
 }  // namespace feedflow

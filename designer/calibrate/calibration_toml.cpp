@@ -72,8 +72,44 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
   return o.str();
 }
 
-std::string with_calibration(std::string_view text, std::string_view table) {
-  const std::string kept = without_calibration(text);
+std::string drum_calibration_toml(const DrumCalibration& c,
+                                  const std::vector<DrumPointRecord>& points) {
+  std::ostringstream o;
+  o << "# Written by `feedflow calibrate`: the drum's flowing layer fitted to a full rung over "
+       "drum speeds.\n";
+  o << "[calibration.drum]\n";
+  o << "against = " << quoted(c.against) << "\n";
+  o << "rung = " << quoted(c.rung) << "\n";
+  o << "scene = " << quoted(c.scene) << "\n";
+  o << "end_walls = " << (c.end_walls ? "true" : "false") << "\n";
+  o << "commit = " << quoted(c.commit) << "\n";
+  o << "date = " << quoted(c.date) << "\n";
+  o << "coefficients = { layer_fraction = " << number(c.layer.coefficients.at("layer_fraction"))
+    << ", friction_shift = "
+    << quoted(number(in_degrees(c.layer.coefficients.at("friction_shift"))) + " deg") << " }\n";
+  if (!c.layer.figures.empty()) {
+    o << "figures = {";
+    bool first = true;
+    for (const auto& [name, text] : c.layer.figures) {
+      o << (first ? " " : ", ") << name << " = " << quoted(text);
+      first = false;
+    }
+    o << " }\n";
+  }
+  for (const auto& p : points) {
+    o << "\n[[calibration.drum.points]]\n";
+    o << "speed = " << quoted(format_number(in_rpm(p.speed), 6) + " rpm") << "\n";
+    o << "dynamic_angle_of_repose = " << quoted(format_number(in_degrees(p.reference), 6) + " deg")
+      << "\n";
+    o << "error_bar = " << quoted(format_number(in_degrees(p.error_bar), 4) + " deg") << "\n";
+    o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
+    o << "source = " << quoted(p.source) << "\n";
+  }
+  return o.str();
+}
+
+std::string with_calibration(std::string_view text, std::string_view table, CalibrationPart part) {
+  const std::string kept = without_calibration(text, part);
   return kept + (kept.empty() ? "" : "\n") + std::string(table);
 }
 

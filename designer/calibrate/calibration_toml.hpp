@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "designer/case/material_text.hpp"
 #include "models/material/calibration.hpp"
 
 namespace feedflow {
@@ -19,12 +20,27 @@ struct CalibrationPointRecord {
   std::string source;         // how the reference was made: "CEL two levels (10, 5 mm; ...)"
 };
 
+// One drum speed as [calibration.drum] records it.
+struct DrumPointRecord {
+  double speed = 0.0;      // [rad/s]
+  double reference = 0.0;  // angle of repose [rad]
+  double error_bar = 0.0;  // [rad]
+  bool held_out = false;
+  std::string source;
+};
+
+// "[calibration.drum]" with its coefficients (the friction shift in degrees) and
+// [[calibration.drum.points]].
+std::string drum_calibration_toml(const DrumCalibration& c,
+                                  const std::vector<DrumPointRecord>& points);
+
 // "[calibration]" with its discharge rows and [[calibration.points]]; coefficients in the
 // shortest text that reads back as the same number.
 std::string calibration_toml(const Calibration& c, const std::vector<CalibrationPointRecord>& points);
 
-// `material_text` without its [calibration] tables (every table whose header starts with
-// "calibration"), with `table_text` appended after one blank line.
-std::string with_calibration(std::string_view material_text, std::string_view table_text);
+// `material_text` without the tables of its calibration's `part` (the other part is kept), with
+// `table_text` appended after one blank line.
+std::string with_calibration(std::string_view material_text, std::string_view table_text,
+                             CalibrationPart part = CalibrationPart::hopper);
 
 }  // namespace feedflow

@@ -1,13 +1,20 @@
 #include "designer/case/calibration_reader.hpp"
 
+#include <cmath>
+
 #include "models/hopper/discharge_models.hpp"
+#include "models/units/angle.hpp"
+#include "models/units/dimension.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kKeys[] = {"against", "rung",   "scene", "geometry", "density_model",
-                                      "commit",  "date",   "discharge", "points"};
+constexpr std::string_view kKeys[] = {"against", "rung", "scene",     "geometry", "density_model",
+                                      "commit",  "date", "discharge", "points",   "drum"};
+constexpr std::string_view kDrumKeys[] = {
+    "against", "rung", "scene", "end_walls", "commit", "date", "coefficients", "figures", "points"};
+constexpr std::string_view kDrumCoefficients[] = {"layer_fraction", "friction_shift"};
 constexpr std::string_view kModelKeys[] = {"coefficients", "figures"};
 
 const toml::table& table_at(const toml::node& node, const std::string& key, const TableContext& ctx) {
@@ -31,6 +38,17 @@ std::string required_choice(const toml::table& t, std::string_view key, std::str
   return text;
 }
 
+std::map<std::string, std::string> read_figures(const toml::table& t, const TableContext& ctx) {
+  std::map<std::string, std::string> out;
+  if (const toml::node* f = t.get("figures")) {
+    TableContext fctx = ctx;
+    fctx.prefix = ctx.dotted("figures");
+    for (auto&& [k, node] : table_at(*f, fctx.prefix, ctx))
+      out[std::string(k.str())] = read_text(node, fctx.dotted(k.str()), fctx);
+  }
+  return out;
+}
+
 CalibratedModel read_model(const toml::table& t, const DischargeModel& row, const TableContext& ctx) {
   for (auto&& [k, node] : t) require_known_key(node, k.str(), kModelKeys, ctx);
   CalibratedModel m;
@@ -52,13 +70,62 @@ CalibratedModel read_model(const toml::table& t, const DischargeModel& row, cons
                            "] (" + std::string(k.meaning) + ")");
     m.coefficients[std::string(k.name)] = *x;
   }
-  if (const toml::node* f = t.get("figures")) {
-    TableContext fctx = ctx;
-    fctx.prefix = ctx.dotted("figures");
-    for (auto&& [k, node] : table_at(*f, fctx.prefix, ctx))
-      m.figures[std::string(k.str())] = read_text(node, fctx.dotted(k.str()), fctx);
-  }
+  m.figures = read_figures(t, ctx);
   return m;
+}
+
+std::size_t point_count(const toml::table& t, const TableContext& ctx) {
+  const toml::node* p = t.get("points");
+  if (!p) return 0;
+  const auto* points = p->as_array();
+  if (!points || !points->is_array_of_tables())
+    throw InputError(location(*p, ctx.file), ctx.dotted("points"),
+                     "expected [[" + ctx.dotted("points") + "]] tables");
+  return points->size();
+}
+
+// [calibration.drum]: c_delta in (0, 1], the friction shift within +-30 deg.
+DrumCalibration read_drum(const toml::table& t, const TableContext& ctx) {
+  for (auto&& [k, node] : t) require_known_key(node, k.str(), kDrumKeys, ctx);
+  DrumCalibration d;
+  d.against = required_choice(t, "against", "cel", "dem", ctx);
+  d.rung = required_text(t, "rung", ctx);
+  d.scene = required_text(t, "scene", ctx);
+  const toml::node* walls = t.get("end_walls");
+  if (!walls || !walls->is_boolean())
+    throw InputError(walls ? location(*walls, ctx.file) : ctx.file, ctx.dotted("end_walls"),
+                     "expected true or false");
+  d.end_walls = walls->value<bool>().value_or(false);
+  d.commit = required_text(t, "commit", ctx);
+  d.date = required_text(t, "date", ctx);
+  const toml::node* c = t.get("coefficients");
+  if (!c) missing_key(t, ctx.dotted("coefficients"), "layer_fraction and friction_shift", ctx.file);
+  TableContext cctx = ctx;
+  cctx.prefix = ctx.dotted("coefficients");
+  const toml::table& coefficients = table_at(*c, cctx.prefix, ctx);
+  for (auto&& [k, node] : coefficients) require_known_key(node, k.str(), kDrumCoefficients, cctx);
+  const toml::node* fraction = coefficients.get("layer_fraction");
+  if (!fraction)
+    missing_key(coefficients, cctx.dotted("layer_fraction"),
+                "c_delta, the layer over the half-chord", ctx.file);
+  const auto x = fraction->value<double>();
+  if (!x || !(*x > 0.0 && *x <= 1.0))
+    throw InputError(
+        location(*fraction, ctx.file), cctx.dotted("layer_fraction"),
+        "expected a number in (0, 1] (c_delta, the flowing layer over the half-chord)");
+  d.layer.coefficients["layer_fraction"] = *x;
+  const toml::node* shift = coefficients.get("friction_shift");
+  if (!shift)
+    missing_key(coefficients, cctx.dotted("friction_shift"), "an angle, e.g. \"2.5 deg\"",
+                ctx.file);
+  const double radians = read_quantity(*shift, dim::angle, cctx.dotted("friction_shift"), cctx);
+  if (!(std::abs(radians) <= 30.0 * kDegree))
+    throw InputError(location(*shift, ctx.file), cctx.dotted("friction_shift"),
+                     "expected an angle within +-30 deg");
+  d.layer.coefficients["friction_shift"] = radians;
+  d.layer.figures = read_figures(t, ctx);
+  d.points = point_count(t, ctx);
+  return d;
 }
 
 }  // namespace
@@ -66,6 +133,12 @@ CalibratedModel read_model(const toml::table& t, const DischargeModel& row, cons
 Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
   for (auto&& [k, node] : t) require_known_key(node, k.str(), kKeys, ctx);
   Calibration c;
+  if (const toml::node* d = t.get("drum")) {
+    TableContext dctx = ctx;
+    dctx.prefix = ctx.dotted("drum");
+    c.drum = read_drum(table_at(*d, dctx.prefix, ctx), dctx);
+    if (t.size() == 1) return c;  // a drum calibration alone: no hopper part
+  }
   c.against = required_choice(t, "against", "cel", "dem", ctx);
   c.rung = required_text(t, "rung", ctx);
   c.scene = required_text(t, "scene", ctx);
@@ -86,12 +159,7 @@ Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
           read_model(table_at(node, mctx.prefix, ctx), discharge_models().at(k.str()), mctx);
     }
   }
-  if (const toml::node* p = t.get("points")) {
-    const auto* points = p->as_array();
-    if (!points || !points->is_array_of_tables())
-      throw InputError(location(*p, ctx.file), ctx.dotted("points"), "expected [[" + ctx.dotted("points") + "]] tables");
-    c.points = points->size();
-  }
+  c.points = point_count(t, ctx);
   return c;
 }
 

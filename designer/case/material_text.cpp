@@ -9,13 +9,29 @@
 namespace feedflow {
 namespace {
 
-// Whether a line opens a table whose name starts with "calibration".
-bool calibration_header(std::string_view line) {
+// The table name a header line opens, from its first letter ("calibration.drum]").
+std::string_view header_name(std::string_view line) {
   const auto first = line.find_first_not_of(" \t");
-  if (first == std::string_view::npos || line[first] != '[') return false;
+  if (first == std::string_view::npos || line[first] != '[') return {};
   std::string_view rest = line.substr(first);
   while (!rest.empty() && (rest.front() == '[' || rest.front() == ' ')) rest.remove_prefix(1);
-  return rest.substr(0, 11) == "calibration" && (rest.size() == 11 || rest[11] == '.' || rest[11] == ']' || rest[11] == ' ');
+  return rest;
+}
+
+// Whether `name` is the table `table` or one under it ("calibration.drum.points" is under
+// "calibration.drum").
+bool names(std::string_view name, std::string_view table) {
+  const std::size_t n = table.size();
+  return name.substr(0, n) == table &&
+         (name.size() == n || name[n] == '.' || name[n] == ']' || name[n] == ' ');
+}
+
+// Whether a line opens a table of `part` of the material's calibration.
+bool calibration_header(std::string_view line, CalibrationPart part) {
+  const std::string_view name = header_name(line);
+  if (!names(name, "calibration")) return false;
+  const bool drum = names(name, "calibration.drum");
+  return part == CalibrationPart::all || (part == CalibrationPart::drum) == drum;
 }
 
 bool any_header(std::string_view line) {
@@ -38,7 +54,7 @@ std::string material_text(const Material& m) {
   return {};
 }
 
-std::string without_calibration(std::string_view text) {
+std::string without_calibration(std::string_view text, CalibrationPart part) {
   std::string kept;
   bool inside = false;
   std::string pending_comments;  // comment lines just above a header belong to that header
@@ -52,7 +68,7 @@ std::string without_calibration(std::string_view text) {
       pending_comments += std::string(line) + "\n";
       continue;
     }
-    if (any_header(line)) inside = calibration_header(line);
+    if (any_header(line)) inside = calibration_header(line, part);
     if (!inside) kept += pending_comments + std::string(line) + "\n";
     pending_comments.clear();
   }

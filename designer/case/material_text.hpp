@@ -12,9 +12,14 @@ namespace feedflow {
 // material defined inside a case file (the case's text holds it).
 std::string material_text(const Material& material);
 
-// `text` without the tables whose header starts with "calibration" ("[calibration]",
-// "[calibration.discharge.beverloo]", "[[calibration.points]]") and the comment lines just above
-// them; no trailing blank lines.
-std::string without_calibration(std::string_view text);
+// The parts of a material's calibration, each written by its own `feedflow calibrate`: the
+// hopper's discharge ([calibration], its discharge rows and points) and the drum's flowing layer
+// ([calibration.drum] and its points).
+enum class CalibrationPart { all, hopper, drum };
+
+// `text` without the calibration tables of `part` ("[calibration]",
+// "[calibration.discharge.beverloo]", "[[calibration.points]]"; "[calibration.drum]",
+// "[[calibration.drum.points]]") and the comment lines just above them; no trailing blank lines.
+std::string without_calibration(std::string_view text, CalibrationPart part = CalibrationPart::all);
 
 }  // namespace feedflow

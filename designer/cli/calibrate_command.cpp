@@ -1,6 +1,7 @@
-// feedflow calibrate MATERIAL --against cel|dem: fits the hopper discharge models' free
-// coefficients to full-rung rates over a design of experiments (outlet width x semi-angle of a
-// hopper case, some points held out), and writes them into the material file as [calibration].
+// feedflow calibrate MATERIAL --against cel|dem: fits the reduced models' free coefficients to
+// full-rung results over a design of experiments, and writes them into the material file: for a
+// hopper case the discharge models' coefficients over outlet width x semi-angle ([calibration]),
+// for a drum case the flowing layer over drum speeds ([calibration.drum]); some points held out.
 // Runs are made through the bench's machinery and kept in the output folder: a repeated or
 // interrupted calibration reads back what is done.
 #include <chrono>
@@ -12,6 +13,7 @@
 #include "designer/bench/bench_table.hpp"
 #include "designer/calibrate/calibration_design.hpp"
 #include "designer/calibrate/calibration_report.hpp"
+#include "designer/calibrate/drum_calibration_report.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_library.hpp"
 #include "designer/case/material_text.hpp"
@@ -21,9 +23,11 @@
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
+#include "designer/design/drum_check.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
+#include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_list.hpp"
 #include "models/units/quantity_parser.hpp"
@@ -39,7 +43,11 @@ struct CalibrateArguments {
   // 15 deg alone would take about 30 min at 6 cells across the half outlet).
   std::string outlet_widths = "50,100 mm";
   std::string semi_angles = "20,35 deg";
-  std::string held_out = "60 mm@30 deg,75 mm@25 deg";
+  std::string held_out;  // empty: the scene's default
+  // A drum: its speeds, all within the material's rolling regime (the angle model's domain). The
+  // CEL drum's runs at 10 and 20 rpm are the bench's (read back when its run folders are here).
+  std::string speeds = "10,20,30 rpm";
+  std::string finest_cell = "5mm";
   std::vector<double> cells_across = {3.0, 6.0};
   std::optional<double> order;
   std::string time = "1s";  // after the opening, as the bench measured the hopper's rate
@@ -55,6 +63,9 @@ std::vector<double> quantity_list(const std::string& text, const Dimension& d, c
     throw InputError(flag, text, e.what());
   }
 }
+
+constexpr const char* kHopperHeldOut = "60 mm@30 deg,75 mm@25 deg";
+constexpr const char* kDrumHeldOut = "15,25 rpm";
 
 // "45 mm@25 deg,75 mm@25 deg".
 std::vector<DesignPoint> held_out_points(const std::string& text) {
@@ -106,12 +117,18 @@ std::string today() {
   return text;
 }
 
+struct RunTally {
+  std::size_t made = 0, read_back = 0;
+  std::set<std::string> commits;  // of the programs that made the runs ("" unrecorded)
+};
+
 // Each point's runs, made or read back, and its reference; false when Ctrl-C stopped them.
-bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root, CalibrationOutcome& o) {
+bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root,
+               std::vector<CalibrationPoint>& points, RunTally& tally) {
   const bool say = args.options.human_output();
   std::size_t total = 0, k = 0;
-  for (const auto& p : o.points) total += p.question.points.size();
-  for (auto& point : o.points) {
+  for (const auto& p : points) total += p.question.points.size();
+  for (auto& point : points) {
     std::map<std::string, BenchRun> runs;
     for (const auto& bp : point.question.points) {
       ++k;
@@ -121,23 +138,24 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
       bool was_made = false;
       BenchRun run = run_or_read_back(point.question, bp, ".", folder, was_made);
       if (was_made) {
-        ++o.runs_made;
+        ++tally.made;
         if (say) std::cout << " " << format_number(run.wall_seconds, 3) << " s" << (run.done() ? "" : " (" + run.status + ")") << '\n';
         if (run.status == "interrupted" || interrupt_requested()) return false;
       } else {
-        ++o.runs_read_back;
+        ++tally.read_back;
       }
       if (!run.done()) point.status = run.status;
-      o.run_commits.insert(run.commit);
+      tally.commits.insert(run.commit);
       runs[point_id(bp)] = std::move(run);
     }
     point.reference = tabulate(point.question, runs).reference;
     const BenchReference& r = point.reference;
     if (point.status != "done") continue;
-    if (!r.value || !(*r.value > 0.0)) point.status = "no reference rate";
+    if (!r.value || !(*r.value > 0.0))
+      point.status = "no reference value";
     else if (r.error_bar && *r.error_bar > kUsableUncertainty * *r.value)
-      point.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " + format_number(*r.error_bar, 2) +
-                     " kg/s)";
+      point.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " +
+                     format_number(*r.error_bar, 2) + " " + r.unit + ")";
   }
   return true;
 }
@@ -155,8 +173,53 @@ std::vector<Case> point_cases(const CalibrationOutcome& o) {
   return cases;
 }
 
-int run_calibrate(const CalibrateArguments& args) {
-  const auto start = std::chrono::steady_clock::now();
+// The output folder: --out, or out/calibrate/<material>.
+std::filesystem::path output_folder(const CalibrateArguments& args, const Material& material) {
+  return args.options.out.empty()
+             ? std::filesystem::path("out/calibrate") / file_name_friendly(material.name)
+             : std::filesystem::path(args.options.out);
+}
+
+// The material file: --write, the one the material came from, or a copy beside the runs for a
+// built-in material.
+std::filesystem::path material_target(const CalibrateArguments& args, const Material& material,
+                                      const std::filesystem::path& out) {
+  if (!args.write.empty()) return args.write;
+  if (material.origin != "built-in") return material.origin;
+  return out / (file_name_friendly(material.name) + ".toml");
+}
+
+// calibration.json (with the command and the wall time), the material file and --json; then
+// the summary and what was written.
+void write_calibration(const CalibrateArguments& args, nlohmann::ordered_json j,
+                       const std::filesystem::path& out, const std::filesystem::path& target,
+                       const std::string& material_file_text, OutputFolder& folder,
+                       const std::string& summary, std::chrono::steady_clock::time_point start) {
+  j["command_line"] = invocation();
+  j["material_file"] = target.string();
+  j["wall_seconds"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::string json_text = j.dump(2) + "\n";
+  std::vector<OutputFile> files = {{out / "calibration.json", json_text, "--out"},
+                                   {target, material_file_text, "--write"}};
+  if (!args.options.json.empty() && !args.options.json_to_stdout())
+    files.push_back({args.options.json, json_text, "--json"});
+  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr,
+                                     args.options.verbose, &folder);
+  if (args.options.human_output()) {
+    std::cout << summary << "Written: ";
+    for (std::size_t i = 0; i < written.size(); ++i)
+      std::cout << (i ? ", " : "") << written[i].string();
+    std::cout << '\n';
+  }
+}
+
+std::string runs_text(std::size_t made, std::size_t read_back) {
+  return std::to_string(made) + " run(s) made, " + std::to_string(read_back) + " read back\n";
+}
+
+int run_hopper_calibration(const CalibrateArguments& args,
+                           std::chrono::steady_clock::time_point start) {
   CalibrationOutcome o;
   o.design = design_of(args);
   const Material material =
@@ -169,12 +232,15 @@ int run_calibrate(const CalibrateArguments& args) {
     return kExitOk;
   }
   const std::vector<Case> cases = point_cases(o);
-  const std::filesystem::path out =
-      args.options.out.empty() ? std::filesystem::path("out/calibrate") / file_name_friendly(material.name)
-                               : std::filesystem::path(args.options.out);
+  const std::filesystem::path out = output_folder(args, material);
   OutputFolder folder(out, "--out");
   install_interrupt_handler();
-  if (!make_runs(args, out / "runs", o)) {
+  RunTally tally;
+  const bool complete = make_runs(args, out / "runs", o.points, tally);
+  o.runs_made = tally.made;
+  o.runs_read_back = tally.read_back;
+  o.run_commits = tally.commits;
+  if (!complete) {
     std::cerr << continue_after_interrupt(out / "runs");
     return kExitInterrupted;
   }
@@ -195,44 +261,143 @@ int run_calibrate(const CalibrateArguments& args) {
   const Calibration table =
       calibration_table(o, cases.front().name, std::get<Hopper>(cases.front().equipment).is_wedge(),
                         std::string(density.name), commit_text(kCommit, o.run_commits), today());
-
-  // The material file: the one it came from, or a copy beside the runs for a built-in material.
-  const std::filesystem::path target = !args.write.empty()            ? std::filesystem::path(args.write)
-                                       : material.origin != "built-in" ? std::filesystem::path(material.origin)
-                                                                       : out / (file_name_friendly(material.name) + ".toml");
-  nlohmann::ordered_json j = calibration_json(o, table);
-  j["command_line"] = invocation();
-  j["material_file"] = target.string();
-  j["wall_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string json_text = j.dump(2) + "\n";
-  std::vector<OutputFile> files = {
-      {out / "calibration.json", json_text, "--out"},
-      {target, with_calibration(material_text(material), calibration_toml(table, calibration_point_records(o))), "--write"}};
-  if (!args.options.json.empty() && !args.options.json_to_stdout()) files.push_back({args.options.json, json_text, "--json"});
-  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr, args.options.verbose, &folder);
-  if (args.options.human_output()) {
-    std::cout << calibration_summary(o, table) << o.runs_made << " run(s) made, " << o.runs_read_back
-              << " read back\nWritten: ";
-    for (std::size_t i = 0; i < written.size(); ++i) std::cout << (i ? ", " : "") << written[i].string();
-    std::cout << '\n';
-  }
+  const auto target = material_target(args, material, out);
+  write_calibration(
+      args, calibration_json(o, table), out, target,
+      with_calibration(material_text(material),
+                       calibration_toml(table, calibration_point_records(o)),
+                       CalibrationPart::hopper),
+      folder, calibration_summary(o, table) + runs_text(o.runs_made, o.runs_read_back), start);
   return kExitOk;
+}
+
+DrumCalibrationDesign drum_design_of(const CalibrateArguments& args, const Case& drum_case,
+                                     const Material& material) {
+  DrumCalibrationDesign d;
+  d.case_file = args.case_file;
+  if (drum_case.material.name != material.name) d.material = args.material;
+  d.against = args.against;
+  d.points = speed_points(quantity_list(args.speeds, dim::angular_speed, "--speeds"),
+                          args.held_out == "none"
+                              ? std::vector<double>{}
+                              : quantity_list(args.held_out.empty() ? kDrumHeldOut : args.held_out,
+                                              dim::angular_speed, "--held-out"));
+  try {
+    d.finest_cell = parse_quantity_as(args.finest_cell, dim::length, false);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--finest-cell", args.finest_cell, e.what());
+  }
+  d.check();
+  return d;
+}
+
+// Each point's drum, checked to roll by the material's thresholds: the angle model's domain.
+std::vector<Case> drum_point_cases(const DrumCalibrationOutcome& o) {
+  std::vector<Case> cases;
+  for (std::size_t i = 0; i < o.points.size(); ++i) {
+    std::vector<SetOverride> overrides;
+    for (const auto& s : o.points[i].question.sets) overrides.push_back(parse_set_override(s));
+    cases.push_back(load_case(o.design.case_file, overrides));
+    const Case& c = cases.back();
+    const Drum& drum = std::get<Drum>(c.equipment);
+    if (!c.material.drum_flow || !c.material.surface_flow)
+      throw InputError(c.material.origin, "material.drum_flow",
+                       "a drum calibration needs the material's [drum_flow] and [surface_flow]");
+    const DrumRegimeAssessment regime =
+        assess_drum_regime(drum, regime_thresholds(*c.material.drum_flow));
+    if (regime.regime != DrumRegime::Rolling)
+      throw InputError(
+          o.design.points[i].held_out ? "--held-out" : "--speeds", rpm_text(drum.speed) + " rpm",
+          "a speed where the drum rolls: the angle model holds in the rolling regime only, and " +
+              c.material.name + "'s thresholds make this drum " +
+              std::string(to_string(regime.regime)) +
+              " there (Fr = " + format_number(regime.froude, 3) + ")");
+  }
+  return cases;
+}
+
+int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
+                         std::chrono::steady_clock::time_point start) {
+  const Material material =
+      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
+          .load(args.material);
+  DrumCalibrationOutcome o;
+  o.design = drum_design_of(args, drum_case, material);
+  o.material = material.name;
+  for (const auto& p : o.design.points)
+    o.points.push_back({drum_point_question(o.design, p), {}, "done"});
+  const std::vector<Case> cases = drum_point_cases(o);
+  if (args.list) {
+    for (const auto& p : o.points)
+      for (const auto& bp : p.question.points)
+        std::cout << bench_invocation(p.question, bp) << '\n';
+    return kExitOk;
+  }
+  const std::filesystem::path out = output_folder(args, material);
+  OutputFolder folder(out, "--out");
+  install_interrupt_handler();
+  RunTally tally;
+  const bool complete = make_runs(args, out / "runs", o.points, tally);
+  o.runs_made = tally.made;
+  o.runs_read_back = tally.read_back;
+  o.run_commits = tally.commits;
+  if (!complete) {
+    std::cerr << continue_after_interrupt(out / "runs");
+    return kExitInterrupted;
+  }
+  for (std::size_t i = 0; i < o.points.size(); ++i) {
+    if (o.points[i].status != "done") continue;
+    // The bench's angles are in degrees.
+    const BenchReference& r = o.points[i].reference;
+    o.observations.push_back({std::get<Drum>(cases[i].equipment), *r.value * kDegree,
+                              r.error_bar.value_or(0.0) * kDegree, o.design.points[i].held_out});
+    o.observed.push_back(i);
+  }
+  const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
+                                    [](const DrumObservation& x) { return !x.held_out; });
+  if (fitted < 2)
+    throw NumericalFailure("calibration: only " + std::to_string(fitted) +
+                           " fitted speed(s) have a reference angle; see the runs in " +
+                           (out / "runs").string());
+  o.fit = fit_drum_layer(o.observations, cases.front().material, o.design.against == "dem");
+  const DrumCalibration table =
+      drum_calibration_table(o, cases.front().name, commit_text(kCommit, o.run_commits), today());
+  const auto target = material_target(args, material, out);
+  write_calibration(
+      args, drum_calibration_json(o, table), out, target,
+      with_calibration(material_text(material), drum_calibration_toml(table, drum_point_records(o)),
+                       CalibrationPart::drum),
+      folder, drum_calibration_summary(o, table) + runs_text(o.runs_made, o.runs_read_back), start);
+  return kExitOk;
+}
+
+// A hopper case calibrates the discharge, a drum case the flowing layer.
+int run_calibrate(const CalibrateArguments& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const Case c = load_case(args.case_file, {});
+  if (std::holds_alternative<Drum>(c.equipment)) return run_drum_calibration(args, c, start);
+  if (!std::holds_alternative<Hopper>(c.equipment))
+    throw InputError("--case", args.case_file,
+                     "a hopper case (discharge) or a drum case (flowing layer)");
+  return run_hopper_calibration(args, start);
 }
 
 }  // namespace
 
 void add_calibrate_command(Command& program, int& exit_code) {
   auto args = std::make_shared<CalibrateArguments>();
-  auto command = program.subcommand(
-      "calibrate",
-      "fit the reduced models' discharge coefficients to a full rung over a design of experiments");
+  auto command = program.subcommand("calibrate",
+                                    "fit the reduced models' coefficients to a full rung over a "
+                                    "design of experiments (hopper: discharge; drum: "
+                                    "flowing layer)");
   command.option("material", args->material, "the material to calibrate (see `feedflow materials`)")
       .required();
   command.option("--against", args->against, "the full rung to fit to")
       .required()
       .one_of({"cel", "dem"});
   command
-      .option("--case", args->case_file, "the hopper case whose outlet and semi-angle are varied")
+      .option("--case", args->case_file,
+              "the case varied: a hopper's outlet and semi-angle, or a drum's speed")
       .show_default()
       .type_name("FILE");
   command.option("--outlet-widths", args->outlet_widths, "outlet widths of the fitted grid")
@@ -243,9 +408,18 @@ void add_calibrate_command(Command& program, int& exit_code) {
       .type_name("LIST");
   command
       .option("--held-out", args->held_out,
-              "points left out of the fit to test it (WIDTH@ANGLE,...; none)")
+              std::string(
+                  "points left out of the fit to test it: a hopper's WIDTH@ANGLE,... (default ") +
+                  kHopperHeldOut + "), a drum's speeds (default " + kDrumHeldOut + "); none")
+      .type_name("LIST");
+  command.option("--speeds", args->speeds, "a drum's fitted speeds, where it rolls")
       .show_default()
       .type_name("LIST");
+  command
+      .option("--finest-cell", args->finest_cell,
+              "a drum's finest CEL level (the bench's refinement series down to it)")
+      .show_default()
+      .type_name("LENGTH");
   command
       .option("--cells-across", args->cells_across,
               "CEL levels: cells across the half outlet, each twice the last (Richardson)")

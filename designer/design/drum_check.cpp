@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <optional>
+#include <string>
 
 #include "designer/design/judge.hpp"
 #include "designer/design/target_units.hpp"
@@ -17,15 +20,26 @@
 namespace feedflow {
 namespace {
 
-// The flowing layer of the material: mu(I) matched to its Pouliquen law mid-way between theta1
-// and theta2, grains of size d50.
-RollingLayerModel layer_model(const Material& m, double layer_fraction, double theta_shift = 0.0) {
+// The flowing layer of the material: mu(I) matched to its Pouliquen law (theta1 and theta2
+// shifted by `friction_shift`) mid-way between theta1 and theta2, grains of size d50.
+RollingLayerModel layer_model(const Material& m, double layer_fraction, double friction_shift) {
   const auto& s = *m.surface_flow;
-  const PouliquenLaw law{s.theta1 + theta_shift, s.theta2 + theta_shift, s.stop_length, s.flow_rule_beta,
-                         s.flow_rule_gamma};
+  const PouliquenLaw law{s.theta1 + friction_shift, s.theta2 + friction_shift, s.stop_length,
+                         s.flow_rule_beta, s.flow_rule_gamma};
   const double d = m.psd ? m.psd->d50 : 1e-3;
   return {mu_i_from_pouliquen(law, d, s.solid_fraction, 0.5 * (law.theta1 + law.theta2), FroudeConvention::SqrtGH),
           layer_fraction, m.drum_flow->end_wall_friction};
+}
+
+// "6.32 %" -> 0.0632; none for other text.
+std::optional<double> percent(const std::map<std::string, std::string>& figures, const char* name) {
+  const auto it = figures.find(name);
+  if (it == figures.end() || it->second.find('%') == std::string::npos) return std::nullopt;
+  try {
+    return std::stod(it->second) / 100.0;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 // Fr over the Fr of the nearest regime boundary (by the ratio), and that boundary in words.
@@ -52,12 +66,20 @@ void regime_results(const DrumRegimeThresholds& t, const DrumRegimeAssessment& r
                                 "Fr = 1/sqrt(1 - f) at the bed's inner radius", Rung::L0));
 }
 
+std::string angle_model_text(const DrumLayer& layer) {
+  if (!layer.calibration) return "mu(I) flowing layer with end-wall friction";
+  return "mu(I) flowing layer with end-wall friction, calibrated (c_delta " +
+         format_number(layer.layer_fraction, 3) + ", friction shift " +
+         format_quantity(layer.friction_shift, "deg", 3) + ")";
+}
+
 // The angle of repose in the rolling regime, and the wall friction the bed needs not to slip.
 void angle_results(const Drum& drum, const Material& m, const DrumRegimeThresholds& t, Estimates& results) {
   const AngleOfRepose angle = rolling_angle_band(drum, m);
   results.emplace_back("dynamic_angle_of_repose",
-                       Estimate{angle.nominal / kDegree, "deg", angle.low / kDegree, angle.high / kDegree,
-                                "mu(I) flowing layer with end-wall friction", Rung::L0, ""});
+                       Estimate{angle.nominal / kDegree, "deg", angle.low / kDegree,
+                                angle.high / kDegree, angle_model_text(drum_layer(m)), Rung::L0,
+                                ""});
   Band slip;
   for (double a : {angle.low, angle.high}) slip.add(assess_drum_regime(drum, t, a).no_slip_friction);
   results.emplace_back("no_slip_wall_friction",
@@ -65,12 +87,38 @@ void angle_results(const Drum& drum, const Material& m, const DrumRegimeThreshol
                               "(r_g/R) sin(beta_d): the least tan(wall friction) for no slip at the shell", Rung::L0));
 }
 
-std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t) {
-  return {"Regime thresholds are calibration targets in Froude number (not Mellmann's recalled bands): rolling to "
-          "cascading at Fr = " + format_number(t.rolling_to_cascading) + ", cascading to cataracting at Fr = " +
-              format_number(t.cascading_to_cataracting) + ".",
-          "The angle of repose comes from a mu(I) flowing layer whose thickness is a fixed fraction of the "
-          "half-chord; it is a mid-chord slope and ignores the S-shape of faster regimes."};
+std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t, const DrumLayer& layer) {
+  std::vector<std::string> out = {
+      "Regime thresholds are calibration targets in Froude number (not Mellmann's recalled bands): "
+      "rolling to "
+      "cascading at Fr = " +
+          format_number(t.rolling_to_cascading) +
+          ", cascading to cataracting at Fr = " + format_number(t.cascading_to_cataracting) + ".",
+      "The angle of repose comes from a mu(I) flowing layer whose thickness is a fixed fraction of "
+      "the "
+      "half-chord; it is a mid-chord slope and ignores the S-shape of faster regimes."};
+  if (const DrumCalibration* c = layer.calibration) {
+    std::string figures;
+    for (const auto& [name, text] : c->layer.figures)
+      if (name.find("_before") == std::string::npos)
+        figures += (figures.empty() ? "" : ", ") + name + " " + text;
+    out.push_back(
+        "The flowing layer is the material's [calibration.drum]: c_delta " +
+        format_number(layer.layer_fraction, 3) + " and theta1, theta2 shifted by " +
+        format_quantity(layer.friction_shift, "deg", 3) + ", fitted to " + c->rung + " over " +
+        std::to_string(c->points) + " drum speeds of " + c->scene + " (commit " + c->commit + ", " +
+        c->date + (figures.empty() ? "" : "; " + figures) + "); the band is widened by " +
+        format_number(100.0 * layer.error, 3) + " %" +
+        (c->end_walls
+             ? "."
+             : "; fitted without end walls (a plane slice), this drum's end-wall friction added."));
+  } else {
+    out.push_back("The flowing layer's c_delta = " + format_number(layer.layer_fraction, 3) +
+                  " is the published mid value (0.1-0.3), not calibrated: `feedflow calibrate "
+                  "MATERIAL --against cel "
+                  "--case DRUM_CASE` fits it to the continuum rung.");
+  }
+  return out;
 }
 
 }  // namespace
@@ -79,17 +127,39 @@ DrumRegimeThresholds regime_thresholds(const DrumFlowProperties& d) {
   return {d.froude_slumping_to_rolling, d.froude_rolling_to_cascading, d.froude_cascading_to_cataracting, 1.0};
 }
 
+DrumLayer drum_layer(const Material& m) {
+  if (m.calibration && m.calibration->drum) {
+    const DrumCalibration& c = *m.calibration->drum;
+    DrumLayer out{c.layer.coefficients.at("layer_fraction"),
+                  c.layer.coefficients.at("friction_shift"), 0.0, &c};
+    for (const char* figure : {"fit_rms_error", "held_out_max_error"})
+      if (const auto x = percent(c.layer.figures, figure)) out.error = std::max(out.error, *x);
+    return out;
+  }
+  return {m.drum_flow->layer_fraction, 0.0, 0.0, nullptr};
+}
+
 AngleOfRepose rolling_angle_band(const Drum& drum, const Material& m) {
   const auto& d = *m.drum_flow;
-  const double nominal = rolling_angle_of_repose(drum, layer_model(m, d.layer_fraction)).angle_of_repose;
+  const DrumLayer layer = drum_layer(m);
+  const auto angle = [&](double fraction, double shift) {
+    return rolling_angle_of_repose(drum, layer_model(m, fraction, shift)).angle_of_repose;
+  };
+  const double nominal = angle(layer.layer_fraction, layer.friction_shift);
   double low = nominal, high = nominal;
   const double u = m.surface_flow->theta_uncertainty;
-  for (double fraction : {d.layer_fraction_low, d.layer_fraction_high})
+  // Published: over the plausible layer thickness and theta's uncertainty. Calibrated: over
+  // theta's uncertainty at the fitted thickness, widened by the calibration's largest error.
+  std::vector<double> fractions = {d.layer_fraction_low, d.layer_fraction_high};
+  if (layer.calibration) fractions = {layer.layer_fraction};
+  for (double fraction : fractions)
     for (double shift : {-u, u}) {
-      const double a = rolling_angle_of_repose(drum, layer_model(m, fraction, shift)).angle_of_repose;
+      const double a = angle(fraction, layer.friction_shift + shift);
       low = std::min(low, a);
       high = std::max(high, a);
     }
+  low = std::min(low, nominal * (1.0 - layer.error));
+  high = std::max(high, nominal * (1.0 + layer.error));
   return {nominal, low, high};
 }
 
@@ -114,7 +184,7 @@ void check_drum(const Case& c, const Drum& drum, DesignDetail detail, DesignReco
   record.verdict = verdict.verdict();
   if (detail == DesignDetail::results) return;
   record.charts = drum_charts(drum, m, regime);
-  record.assumptions = drum_assumptions(thresholds);
+  record.assumptions = drum_assumptions(thresholds, drum_layer(m));
 }
 
 }  // namespace feedflow

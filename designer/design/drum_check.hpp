@@ -17,9 +17,21 @@ void check_drum(const Case& c, const Drum& drum, DesignDetail detail, DesignReco
 // The regime thresholds of a material's [drum_flow].
 DrumRegimeThresholds regime_thresholds(const DrumFlowProperties& d);
 
+// The flowing layer's coefficients the design check uses: the material's [calibration.drum]
+// when it has one (`calibration` points at it; `error` is its largest relative error, fit rms
+// or held out), else [drum_flow]'s c_delta and no shift.
+struct DrumLayer {
+  double layer_fraction;  // c_delta [-]
+  double friction_shift;  // added to theta1 and theta2 [rad]
+  double error;           // [-]
+  const DrumCalibration* calibration;
+};
+DrumLayer drum_layer(const Material& m);
+
 // The dynamic angle of repose of the rolling regime (mu(I) flowing layer with end-wall
-// friction), nominal and over the layer thickness range and +- the uncertainty of theta1 and
-// theta2 [rad]. The material has [surface_flow] and [drum_flow].
+// friction), nominal and over +- the uncertainty of theta1 and theta2 and the layer thickness
+// range (published) or the calibration's error (calibrated) [rad]. The material has
+// [surface_flow] and [drum_flow].
 struct AngleOfRepose {
   double nominal, low, high;
 };

@@ -2,8 +2,10 @@
 // A material's [calibration] table: reduced-model coefficients that `feedflow calibrate` fitted
 // to a full rung over a design of experiments, with what they were fitted to (rung, scene,
 // commit, date) and how well (residuals before and after, on the fitted and the held-out points).
-// The design check uses them for hoppers of the calibrated geometry and says so.
+// The design check uses them for hoppers of the calibrated geometry and says so. A drum
+// calibration ([calibration.drum]) has its own provenance: it is made and written apart.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,20 @@ struct CalibratedModel {
   std::map<std::string, std::string> figures;  // fit_rms_error, held_out_max_error, before_...
 };
 
+// The drum's flowing layer (drum_check, reduced_models.md section 4) fitted to a rung's angles
+// of repose over drum speeds: coefficients "layer_fraction" (c_delta) and "friction_shift" [rad]
+// (added to the Pouliquen angles theta1 and theta2 the layer's mu(I) is matched to).
+struct DrumCalibration {
+  std::string against;  // "cel" | "dem"
+  std::string rung;     // what the references were, in words
+  std::string scene;    // the drum case whose speed the design of experiments varied
+  bool end_walls =
+      false;  // the rung's drum had end walls (the fit kept mu_ew; a plane slice: none)
+  std::string commit, date;  // of the program that made the references
+  CalibratedModel layer;
+  std::size_t points = 0;  // design points (fitted and held out)
+};
+
 struct Calibration {
   std::string against;        // "cel" | "dem"
   std::string rung;           // what the references were, in words
@@ -25,6 +41,7 @@ struct Calibration {
   std::string commit, date;   // of the program that made the references
   std::map<std::string, CalibratedModel> discharge;  // by hopper.discharge row name
   std::size_t points = 0;     // design points (fitted and held out)
+  std::optional<DrumCalibration> drum;  // [calibration.drum]
 };
 
 }  // namespace feedflow
