@@ -5,6 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "designer/bench/bench_run.hpp"
+#include "designer/calibrate/drum_calibration_design.hpp"
+#include "designer/case/case_loader.hpp"
+#include "designer/design/drum_check.hpp"
+#include "models/units/angle.hpp"
 #include "run_feedflow.hpp"
 
 namespace fs = std::filesystem;
@@ -46,6 +51,90 @@ TEST(CalibrateCommand, CalibratesTheMaterialFileAndDesignUsesIt) {
   const feedflow::testing::Run again = run_feedflow(args, dir);
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_NE(again.out.find("0 run(s) made, 3 read back"), std::string::npos) << again.out;
+  fs::remove_all(dir);
+}
+
+// The seed drum's angle of repose made by a known layer (c_delta 0.3, theta1 and theta2 +6 deg,
+// no end walls) at `rpm`, in degrees.
+double layer_angle(double rpm) {
+  feedflow::Case c = feedflow::load_case("cases/rotating_drum_20rpm.toml");
+  auto& drum = std::get<feedflow::Drum>(c.equipment);
+  drum.speed = rpm * feedflow::kRpm;
+  c.material.drum_flow->end_wall_friction = 0.0;
+  c.material.calibration.emplace().drum.emplace().layer.coefficients = {
+      {"layer_fraction", 0.3}, {"friction_shift", 6 * feedflow::kDegree}};
+  return feedflow::in_degrees(feedflow::rolling_angle_band(drum, c.material).nominal);
+}
+
+// A drum calibration on CEL runs laid down as the bench keeps them (20 and 10 mm levels 1 and
+// 0.5 deg below the known layer's angle, so Richardson at order 1 gives that angle): every run is
+// read back, the fit recovers the layer, the material file gains [calibration.drum] and keeps
+// the hopper's [calibration], and `design` on the drum says it uses it.
+TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
+  feedflow::DrumCalibrationDesign d;
+  d.case_file = "cases/rotating_drum_20rpm.toml";
+  d.finest_cell = 0.01;
+  d.points =
+      feedflow::speed_points({10 * feedflow::kRpm, 30 * feedflow::kRpm}, {20 * feedflow::kRpm});
+  for (const auto& point : d.points) {
+    const feedflow::BenchQuestion q = feedflow::drum_point_question(d, point);
+    for (const auto& p : q.points) {
+      feedflow::BenchRun run;
+      run.invocation = feedflow::bench_invocation(q, p);
+      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
+      run.wall_seconds = 1.0;
+      run.commit = "test";
+      const double angle =
+          layer_angle(feedflow::in_rpm(point.speed)) - 50.0 * *p.cell_size;  // 1 / 0.5 deg
+      run.results = {{"dynamic_angle_of_repose", {{"value", angle}, {"unit", "deg"}}},
+                     {"dynamic_angle_of_repose_interval", {{"value", 0.1}, {"unit", "deg"}}}};
+      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
+    }
+  }
+  const std::string before = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against cel --case cases/rotating_drum_20rpm.toml --speeds "
+      "\"10,30 rpm\" "
+      "--held-out \"20 rpm\" --finest-cell 10mm --out c",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("0 run(s) made, 6 read back"), std::string::npos) << r.out;
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  EXPECT_NEAR(json["flowing_layer"]["layer_fraction_after"].get<double>(), 0.3, 1e-3);
+  EXPECT_NEAR(
+      feedflow::in_degrees(json["flowing_layer"]["friction_shift_after"]["value"].get<double>()),
+      6.0, 0.02);
+  EXPECT_LT(json["flowing_layer"]["held_out_max_error_after"].get<double>(), 1e-3);
+  const std::string material = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  EXPECT_NE(material.find("[calibration.drum]"), std::string::npos);
+  EXPECT_NE(material.find("[[calibration.drum.points]]"), std::string::npos);
+  // The hopper's part as it was.
+  const auto hopper_part = [](const std::string& text) {
+    const auto at = text.find("[calibration]");
+    return at == std::string::npos ? std::string()
+                                   : text.substr(at, text.find("[calibration.drum]") - at);
+  };
+  EXPECT_EQ(hopper_part(material).substr(0, hopper_part(before).size()), hopper_part(before));
+
+  const feedflow::testing::Run design = run_feedflow("design cases/rotating_drum_20rpm.toml", dir);
+  ASSERT_EQ(design.exit_code, 0) << design.err;
+  EXPECT_NE(design.out.find("calibrated (c_delta 0.3"), std::string::npos) << design.out;
+  fs::remove_all(dir);
+}
+
+// A drum speed outside the rolling regime (50 rpm cascades by the pine's thresholds) is refused
+// by flag before any run.
+TEST(CalibrateCommand, ADrumSpeedWhereItDoesNotRollIsRefused) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against cel --case cases/rotating_drum_20rpm.toml --speeds "
+      "\"10,50 rpm\" --out c",
+      dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--speeds: 50 rpm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cascading"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "c"));
   fs::remove_all(dir);
 }
 
