@@ -27,23 +27,15 @@ std::optional<double> row_rate(const DischargeModel& row, std::span<const double
   return e.rate * slot_length_of(h);
 }
 
-struct Errors {
-  double fit_rms = 0.0, held_out_max = 0.0;
-};
-
-Errors errors_of(const std::vector<double>& rates, const std::vector<DischargeObservation>& obs) {
-  Errors e;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    const double err = relative_error(rates[i], obs[i].reference);
-    if (obs[i].held_out) e.held_out_max = std::max(e.held_out_max, err);
-    else {
-      e.fit_rms += err * err;
-      ++n;
-    }
+FitErrors errors_of(const std::vector<double>& rates,
+                    const std::vector<DischargeObservation>& obs) {
+  std::vector<double> references;
+  std::vector<bool> held_out;
+  for (const auto& o : obs) {
+    references.push_back(o.reference);
+    held_out.push_back(o.held_out);
   }
-  e.fit_rms = std::sqrt(e.fit_rms / static_cast<double>(n));
-  return e;
+  return fit_errors(rates, references, held_out);
 }
 
 // Least squares over the free coefficients, holding at its published value any the fit takes
@@ -120,7 +112,7 @@ DischargeRowFit fit_row(const DischargeModel& row, const std::vector<DischargeOb
     f.standard_errors.assign(f.before.size(), 0.0);
     f.rate_after = f.rate_before;
   }
-  const Errors before = errors_of(f.rate_before, obs), after = errors_of(f.rate_after, obs);
+  const FitErrors before = errors_of(f.rate_before, obs), after = errors_of(f.rate_after, obs);
   f.fit_rms_before = before.fit_rms;
   f.held_out_max_before = before.held_out_max;
   f.fit_rms_after = after.fit_rms;
@@ -143,6 +135,23 @@ void design_figures(const std::vector<DischargeObservation>& obs, const HopperMa
 }  // namespace
 
 double relative_error(double a, double b) { return std::abs(a / b - 1.0); }
+
+FitErrors fit_errors(const std::vector<double>& values, const std::vector<double>& references,
+                     const std::vector<bool>& held_out) {
+  FitErrors e;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double err = relative_error(values[i], references[i]);
+    if (held_out[i])
+      e.held_out_max = std::max(e.held_out_max, err);
+    else {
+      e.fit_rms += err * err;
+      ++n;
+    }
+  }
+  e.fit_rms = n ? std::sqrt(e.fit_rms / static_cast<double>(n)) : 0.0;
+  return e;
+}
 
 DischargeFit fit_discharge(const std::vector<DischargeObservation>& obs, HopperMaterial m, const HopperModels& models) {
   if (std::none_of(obs.begin(), obs.end(), [](const DischargeObservation& o) { return !o.held_out; }))

@@ -55,4 +55,12 @@ DischargeFit fit_discharge(const std::vector<DischargeObservation>& observations
 // |a / b - 1|.
 double relative_error(double a, double b);
 
+// A model's errors against a fit's references: the rms relative error over the fitted points and
+// the largest over the held-out ones (0 without any).
+struct FitErrors {
+  double fit_rms = 0.0, held_out_max = 0.0;
+};
+FitErrors fit_errors(const std::vector<double>& values, const std::vector<double>& references,
+                     const std::vector<bool>& held_out);
+
 }  // namespace feedflow

@@ -22,24 +22,14 @@ void set_trial(Material& m, double layer_fraction, double shift) {
   c.layer.coefficients = {{"layer_fraction", layer_fraction}, {"friction_shift", shift}};
 }
 
-struct Errors {
-  double fit_rms = 0.0, held_out_max = 0.0;
-};
-
-Errors errors_of(const std::vector<double>& angles, const std::vector<DrumObservation>& obs) {
-  Errors e;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    const double err = relative_error(angles[i], obs[i].reference);
-    if (obs[i].held_out)
-      e.held_out_max = std::max(e.held_out_max, err);
-    else {
-      e.fit_rms += err * err;
-      ++n;
-    }
+FitErrors errors_of(const std::vector<double>& angles, const std::vector<DrumObservation>& obs) {
+  std::vector<double> references;
+  std::vector<bool> held_out;
+  for (const auto& o : obs) {
+    references.push_back(o.reference);
+    held_out.push_back(o.held_out);
   }
-  e.fit_rms = std::sqrt(e.fit_rms / static_cast<double>(n));
-  return e;
+  return fit_errors(angles, references, held_out);
 }
 
 // The design check's nominal angle and whether its band holds the reference, per observation.
@@ -126,14 +116,14 @@ DrumLayerFit fit_drum_layer(const std::vector<DrumObservation>& obs, Material m,
     f.layer_fraction_after = f.layer_fraction_before;
     f.shift_after = 0.0;
   }
-  const Errors before = errors_of(f.angle_before, obs);
+  const FitErrors before = errors_of(f.angle_before, obs);
   f.fit_rms_before = before.fit_rms;
   f.held_out_max_before = before.held_out_max;
   Material calibrated = m;
   set_trial(calibrated, f.layer_fraction_after, f.shift_after);
   std::vector<bool> unused;
   design_figures(obs, calibrated, f.angle_after, unused);
-  const Errors after = errors_of(f.angle_after, obs);
+  const FitErrors after = errors_of(f.angle_after, obs);
   f.fit_rms_after = after.fit_rms;
   f.held_out_max_after = after.held_out_max;
 

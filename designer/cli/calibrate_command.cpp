@@ -173,6 +173,20 @@ std::vector<Case> point_cases(const CalibrationOutcome& o) {
   return cases;
 }
 
+// Every point's runs made or read back below OUT/runs, the tally in the outcome; false (having
+// said how to continue) when Ctrl-C stopped them.
+template <class Outcome>
+bool run_points(const CalibrateArguments& args, const std::filesystem::path& out, Outcome& o) {
+  install_interrupt_handler();
+  RunTally tally;
+  const bool complete = make_runs(args, out / "runs", o.points, tally);
+  o.runs_made = tally.made;
+  o.runs_read_back = tally.read_back;
+  o.run_commits = tally.commits;
+  if (!complete) std::cerr << continue_after_interrupt(out / "runs");
+  return complete;
+}
+
 // The output folder: --out, or out/calibrate/<material>.
 std::filesystem::path output_folder(const CalibrateArguments& args, const Material& material) {
   return args.options.out.empty()
@@ -234,16 +248,7 @@ int run_hopper_calibration(const CalibrateArguments& args,
   const std::vector<Case> cases = point_cases(o);
   const std::filesystem::path out = output_folder(args, material);
   OutputFolder folder(out, "--out");
-  install_interrupt_handler();
-  RunTally tally;
-  const bool complete = make_runs(args, out / "runs", o.points, tally);
-  o.runs_made = tally.made;
-  o.runs_read_back = tally.read_back;
-  o.run_commits = tally.commits;
-  if (!complete) {
-    std::cerr << continue_after_interrupt(out / "runs");
-    return kExitInterrupted;
-  }
+  if (!run_points(args, out, o)) return kExitInterrupted;
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     if (o.points[i].status != "done") continue;
     o.observations.push_back({std::get<Hopper>(cases[i].equipment), *o.points[i].reference.value,
@@ -335,16 +340,7 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
   }
   const std::filesystem::path out = output_folder(args, material);
   OutputFolder folder(out, "--out");
-  install_interrupt_handler();
-  RunTally tally;
-  const bool complete = make_runs(args, out / "runs", o.points, tally);
-  o.runs_made = tally.made;
-  o.runs_read_back = tally.read_back;
-  o.run_commits = tally.commits;
-  if (!complete) {
-    std::cerr << continue_after_interrupt(out / "runs");
-    return kExitInterrupted;
-  }
+  if (!run_points(args, out, o)) return kExitInterrupted;
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     if (o.points[i].status != "done") continue;
     // The bench's angles are in degrees.

@@ -5,6 +5,8 @@
 // says so, with the calibrated row that met the full rung best unless --model picks one.
 #include <gtest/gtest.h>
 
+#include "pine_material.hpp"
+
 #include "designer/calibrate/calibration_toml.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_reader.hpp"
@@ -17,17 +19,7 @@
 namespace feedflow {
 namespace {
 
-// The built-in pine's text without the [calibration] it ships with.
-std::string pine_text() {
-  for (const auto& b : builtin_material_texts())
-    if (b.name == "loblolly_pine") {
-      std::string text(b.toml);
-      text = text.substr(0, text.find("# Written by `feedflow calibrate`"));
-      while (!text.empty() && text.back() == '\n') text.pop_back();
-      return text + "\n";
-    }
-  throw std::runtime_error("no built-in pine");
-}
+using testing::pine_text;
 
 Calibration example(double johanson_factor) {
   Calibration c;
@@ -47,9 +39,7 @@ Calibration example(double johanson_factor) {
 const std::vector<CalibrationPointRecord> kPoints = {{0.04, 15 * kDegree, 1.5, 0.1, false, "CEL two levels"},
                                                      {0.045, 25 * kDegree, 1.9, 0.12, true, "CEL two levels"}};
 
-Material read(const std::string& text) {
-  return read_material(parse_material_text(text, "pine.toml"), "pine.toml", "test");
-}
+Material read(const std::string& text) { return testing::read_material_text(text); }
 
 // Written, read back: the same coefficients (bit for bit), figures, provenance and points.
 TEST(CalibrationToml, CalibratedMaterialRoundTrips) {

@@ -5,6 +5,8 @@
 // it, the design check uses it and says so, and each design point is the bench's own question.
 #include <gtest/gtest.h>
 
+#include "pine_material.hpp"
+
 #include "designer/bench/bench_plan.hpp"
 #include "designer/bench/bench_run.hpp"
 #include "designer/calibrate/calibration_toml.hpp"
@@ -21,21 +23,9 @@
 namespace feedflow {
 namespace {
 
-// The built-in pine's text without any [calibration].
-std::string pine_text() {
-  for (const auto& b : builtin_material_texts())
-    if (b.name == "loblolly_pine") {
-      std::string text(b.toml);
-      text = text.substr(0, text.find("# Written by `feedflow calibrate`"));
-      while (!text.empty() && text.back() == '\n') text.pop_back();
-      return text + "\n";
-    }
-  throw std::runtime_error("no built-in pine");
-}
+using testing::pine_text;
 
-Material read(const std::string& text) {
-  return read_material(parse_material_text(text, "pine.toml"), "pine.toml", "test");
-}
+Material read(const std::string& text) { return testing::read_material_text(text); }
 
 Drum seed_drum(double rpm) {
   Drum d = std::get<Drum>(load_case("cases/rotating_drum_20rpm.toml").equipment);
