@@ -9,6 +9,7 @@
 #include "designer/cli/commands.hpp"
 #include "designer/cli/output_files.hpp"
 #include "designer/design/case_inputs.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -30,6 +31,39 @@ void list_materials(const MaterialLibrary& library, const CommandOptions& option
     std::printf("%-20s %-44s %s\n", e.name.c_str(), e.origin.c_str(), e.description.c_str());
 }
 
+std::string figures_text(const CalibratedModel& m) {
+  std::string out;
+  for (const auto& [name, text] : m.figures)
+    if (name.find("_before") == std::string::npos)
+      out += (out.empty() ? "" : ", ") + name + " " + text;
+  return out;
+}
+
+// What `feedflow calibrate` fitted into the material, a line per part (none: not calibrated).
+std::vector<std::string> calibration_lines(const Calibration& c) {
+  std::vector<std::string> lines;
+  if (!c.discharge.empty()) {
+    std::string rows;
+    for (const auto& [row, model] : c.discharge) {
+      std::string coefficients;
+      for (const auto& [name, value] : model.coefficients)
+        coefficients += (coefficients.empty() ? "" : ", ") + name + " " + format_number(value, 4);
+      rows += "\n    " + row + ": " + coefficients + " (" + figures_text(model) + ")";
+    }
+    lines.push_back("[calibration] hopper discharge, " + c.geometry + " hoppers, against " +
+                    c.rung + " over " + std::to_string(c.points) + " points of " + c.scene +
+                    " (commit " + c.commit + ", " + c.date + "):" + rows);
+  }
+  if (const auto& d = c.drum)
+    lines.push_back(
+        "[calibration.drum] flowing layer: c_delta " +
+        format_number(d->layer.coefficients.at("layer_fraction"), 3) + ", friction shift " +
+        format_quantity(d->layer.coefficients.at("friction_shift"), "deg", 3) + ", against " +
+        d->rung + " over " + std::to_string(d->points) + " speeds of " + d->scene + " (commit " +
+        d->commit + ", " + d->date + "; " + figures_text(d->layer) + ")");
+  return lines;
+}
+
 void show_material(const MaterialLibrary& library, const std::string& name,
                    const CommandOptions& options) {
   const Material m = library.load(name);
@@ -43,6 +77,9 @@ void show_material(const MaterialLibrary& library, const std::string& name,
                         {"display", row.value.display}, {"description", row.description},
                         {"source", row.value.source}};
   }
+  const std::vector<std::string> calibrated =
+      m.calibration ? calibration_lines(*m.calibration) : std::vector<std::string>{};
+  j["calibration"] = calibrated;
   write_json_copy(j.dump(2) + "\n", options);
   if (!options.human_output()) return;
   std::cout << m.name << ": " << m.description << "\norigin: " << m.origin << "\n";
@@ -58,6 +95,9 @@ void show_material(const MaterialLibrary& library, const std::string& name,
                 row.value.key.substr(dot + 1).c_str(), row.value.display.c_str(),
                 row.description.c_str(), "", "", row.value.source.c_str());
   }
+  std::cout << "\nCalibration (written by `feedflow calibrate`; `design` uses it and says so):\n";
+  if (calibrated.empty()) std::cout << "  none\n";
+  for (const auto& line : calibrated) std::cout << "  " << line << '\n';
 }
 
 }  // namespace

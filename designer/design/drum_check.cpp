@@ -90,13 +90,11 @@ void angle_results(const Drum& drum, const Material& m, const DrumRegimeThreshol
 std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t, const DrumLayer& layer) {
   std::vector<std::string> out = {
       "Regime thresholds are calibration targets in Froude number (not Mellmann's recalled bands): "
-      "rolling to "
-      "cascading at Fr = " +
+      "rolling to cascading at Fr = " +
           format_number(t.rolling_to_cascading) +
           ", cascading to cataracting at Fr = " + format_number(t.cascading_to_cataracting) + ".",
       "The angle of repose comes from a mu(I) flowing layer whose thickness is a fixed fraction of "
-      "the "
-      "half-chord; it is a mid-chord slope and ignores the S-shape of faster regimes."};
+      "the half-chord; it is a mid-chord slope and ignores the S-shape of faster regimes."};
   if (const DrumCalibration* c = layer.calibration) {
     std::string figures;
     for (const auto& [name, text] : c->layer.figures)
@@ -115,8 +113,7 @@ std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t, const D
   } else {
     out.push_back("The flowing layer's c_delta = " + format_number(layer.layer_fraction, 3) +
                   " is the published mid value (0.1-0.3), not calibrated: `feedflow calibrate "
-                  "MATERIAL --against cel "
-                  "--case DRUM_CASE` fits it to the continuum rung.");
+                  "MATERIAL --against cel --case DRUM_CASE` fits it to the continuum rung.");
   }
   return out;
 }

@@ -105,17 +105,22 @@ TEST_F(FeedflowCli, SimulateBadOptionsExitTwo) {
   }
 }
 
-// materials lists the pine; materials NAME shows every parameter with unit and source.
+// materials lists the pine; materials NAME shows every parameter with unit and source, and what
+// `feedflow calibrate` fitted into it (the shipped pine: the hopper's discharge and the drum's
+// flowing layer).
 TEST_F(FeedflowCli, MaterialsListAndDetail) {
   const auto list = run_feedflow("materials", dir_);
   EXPECT_EQ(list.exit_code, 0);
   EXPECT_NE(list.out.find("loblolly_pine"), std::string::npos);
   const auto one = run_feedflow("materials loblolly_pine", dir_);
   EXPECT_EQ(one.exit_code, 0);
-  for (const char* text : {"187.6 kPa", "47.3 deg", "290 kg/m^3", "1.5 mm", "source: seed Table 2"})
+  for (const char* text : {"187.6 kPa", "47.3 deg", "290 kg/m^3", "1.5 mm", "source: seed Table 2",
+                           "[calibration] hopper discharge, wedge hoppers",
+                           "[calibration.drum] flowing layer: c_delta"})
     EXPECT_NE(one.out.find(text), std::string::npos) << text;
   const auto json = nlohmann::json::parse(run_feedflow("materials loblolly_pine --json -", dir_).out);
   EXPECT_EQ(json.at("parameters").at("hypoplastic.h_s").at("value"), 187600.0);
+  EXPECT_EQ(json.at("calibration").size(), 2u);
   EXPECT_EQ(run_feedflow("materials oak", dir_).exit_code, 2);
 }
 
