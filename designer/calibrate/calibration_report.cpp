@@ -88,15 +88,23 @@ std::vector<CalibrationPointRecord> calibration_point_records(const CalibrationO
   return records;
 }
 
+nlohmann::ordered_json calibration_json_head(const std::string& material,
+                                             const std::string& against, const std::string& rung,
+                                             const std::string& commit, const std::string& date,
+                                             std::size_t runs_made, std::size_t runs_read_back) {
+  return {{"feedflow_calibrate", material},
+          {"against", against},
+          {"rung", rung},
+          {"commit", commit},
+          {"date", date},
+          {"runs_made", runs_made},
+          {"runs_read_back", runs_read_back}};
+}
+
 nlohmann::ordered_json calibration_json(const CalibrationOutcome& o, const Calibration& table) {
-  nlohmann::ordered_json j;
-  j["feedflow_calibrate"] = o.material;
-  j["against"] = table.against;
-  j["rung"] = table.rung;
-  j["commit"] = table.commit;
-  j["date"] = table.date;
-  j["runs_made"] = o.runs_made;
-  j["runs_read_back"] = o.runs_read_back;
+  nlohmann::ordered_json j =
+      calibration_json_head(o.material, table.against, table.rung, table.commit, table.date,
+                            o.runs_made, o.runs_read_back);
   auto& jp = j["points"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     const DesignPoint& d = o.design.points[i];

@@ -46,6 +46,13 @@ std::vector<CalibrationPointRecord> calibration_point_records(const CalibrationO
 std::string commit_text(const std::string& program, const std::set<std::string>& run_commits);
 
 nlohmann::ordered_json calibration_json(const CalibrationOutcome& outcome, const Calibration& table);
+
+// calibration.json's head, shared by every calibration: the material, the rung, the provenance
+// and the runs made and read back.
+nlohmann::ordered_json calibration_json_head(const std::string& material,
+                                             const std::string& against, const std::string& rung,
+                                             const std::string& commit, const std::string& date,
+                                             std::size_t runs_made, std::size_t runs_read_back);
 std::string calibration_summary(const CalibrationOutcome& outcome, const Calibration& table);
 
 }  // namespace feedflow

@@ -64,15 +64,10 @@ std::vector<DrumPointRecord> drum_point_records(const DrumCalibrationOutcome& o)
 
 nlohmann::ordered_json drum_calibration_json(const DrumCalibrationOutcome& o,
                                              const DrumCalibration& table) {
-  nlohmann::ordered_json j;
-  j["feedflow_calibrate"] = o.material;
+  nlohmann::ordered_json j =
+      calibration_json_head(o.material, table.against, table.rung, table.commit, table.date,
+                            o.runs_made, o.runs_read_back);
   j["scene"] = "drum";
-  j["against"] = table.against;
-  j["rung"] = table.rung;
-  j["commit"] = table.commit;
-  j["date"] = table.date;
-  j["runs_made"] = o.runs_made;
-  j["runs_read_back"] = o.runs_read_back;
   auto& jp = j["points"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     const DrumDesignPoint& d = o.design.points[i];
