@@ -82,6 +82,8 @@ std::string drum_calibration_toml(const DrumCalibration& c,
   o << "rung = " << quoted(c.rung) << "\n";
   o << "scene = " << quoted(c.scene) << "\n";
   o << "end_walls = " << (c.end_walls ? "true" : "false") << "\n";
+  if (c.diameter) o << "diameter = " << quoted(format_number(*c.diameter * 1e3, 6) + " mm") << "\n";
+  if (c.fill_fraction) o << "fill_fraction = " << number(*c.fill_fraction) << "\n";
   o << "commit = " << quoted(c.commit) << "\n";
   o << "date = " << quoted(c.date) << "\n";
   o << "coefficients = { layer_fraction = " << number(c.layer.coefficients.at("layer_fraction"))

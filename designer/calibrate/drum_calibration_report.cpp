@@ -39,12 +39,15 @@ std::string drum_rung_text(const DrumCalibrationOutcome& o) {
 }
 
 DrumCalibration drum_calibration_table(const DrumCalibrationOutcome& o, const std::string& scene,
-                                       const std::string& commit, const std::string& date) {
+                                       const Drum& scene_drum, const std::string& commit,
+                                       const std::string& date) {
   DrumCalibration c;
   c.against = o.design.against;
   c.rung = drum_rung_text(o);
   c.scene = scene;
   c.end_walls = o.design.against == "dem";
+  c.diameter = scene_drum.diameter;
+  c.fill_fraction = scene_drum.fill_fraction;
   c.commit = commit;
   c.date = date;
   c.layer = o.fit.layer;

@@ -29,9 +29,10 @@ struct DrumCalibrationOutcome {
 // refinement series of the drum's radius), Richardson".
 std::string drum_rung_text(const DrumCalibrationOutcome& outcome);
 
+// `scene_drum`: the calibrated drum (its size and fill are recorded).
 DrumCalibration drum_calibration_table(const DrumCalibrationOutcome& outcome,
-                                       const std::string& scene, const std::string& commit,
-                                       const std::string& date);
+                                       const std::string& scene, const Drum& scene_drum,
+                                       const std::string& commit, const std::string& date);
 std::vector<DrumPointRecord> drum_point_records(const DrumCalibrationOutcome& outcome);
 nlohmann::ordered_json drum_calibration_json(const DrumCalibrationOutcome& outcome,
                                              const DrumCalibration& table);

@@ -12,8 +12,9 @@ namespace {
 
 constexpr std::string_view kKeys[] = {"against", "rung", "scene",     "geometry", "density_model",
                                       "commit",  "date", "discharge", "points",   "drum"};
-constexpr std::string_view kDrumKeys[] = {
-    "against", "rung", "scene", "end_walls", "commit", "date", "coefficients", "figures", "points"};
+constexpr std::string_view kDrumKeys[] = {"against",      "rung",          "scene",  "end_walls",
+                                          "diameter",     "fill_fraction", "commit", "date",
+                                          "coefficients", "figures",       "points"};
 constexpr std::string_view kDrumCoefficients[] = {"layer_fraction", "friction_shift"};
 constexpr std::string_view kModelKeys[] = {"coefficients", "figures"};
 
@@ -96,6 +97,19 @@ DrumCalibration read_drum(const toml::table& t, const TableContext& ctx) {
     throw InputError(walls ? location(*walls, ctx.file) : ctx.file, ctx.dotted("end_walls"),
                      "expected true or false");
   d.end_walls = walls->value<bool>().value_or(false);
+  if (const toml::node* diameter = t.get("diameter")) {
+    d.diameter = read_quantity(*diameter, dim::length, ctx.dotted("diameter"), ctx);
+    if (!(*d.diameter > 0.0))
+      throw InputError(location(*diameter, ctx.file), ctx.dotted("diameter"),
+                       "expected a length above 0");
+  }
+  if (const toml::node* fill = t.get("fill_fraction")) {
+    const auto f = fill->value<double>();
+    if (!f || !(*f > 0.0 && *f < 1.0))
+      throw InputError(location(*fill, ctx.file), ctx.dotted("fill_fraction"),
+                       "expected a number in (0, 1)");
+    d.fill_fraction = *f;
+  }
   d.commit = required_text(t, "commit", ctx);
   d.date = required_text(t, "date", ctx);
   const toml::node* c = t.get("coefficients");

@@ -357,7 +357,8 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
                            (out / "runs").string());
   o.fit = fit_drum_layer(o.observations, cases.front().material, o.design.against == "dem");
   const DrumCalibration table =
-      drum_calibration_table(o, cases.front().name, commit_text(kCommit, o.run_commits), today());
+      drum_calibration_table(o, cases.front().name, std::get<Drum>(cases.front().equipment),
+                             commit_text(kCommit, o.run_commits), today());
   const auto target = material_target(args, material, out);
   write_calibration(
       args, drum_calibration_json(o, table), out, target,

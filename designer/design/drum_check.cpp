@@ -87,7 +87,22 @@ void angle_results(const Drum& drum, const Material& m, const DrumRegimeThreshol
                               "(r_g/R) sin(beta_d): the least tan(wall friction) for no slip at the shell", Rung::L0));
 }
 
-std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t, const DrumLayer& layer) {
+// Where `drum` lies beyond the calibrated drum (diameter or fill more than 10 % off), in words;
+// empty within it or when the table did not record it.
+std::string beyond_calibration(const Drum& drum, const DrumCalibration& c) {
+  std::string out;
+  if (c.diameter && std::abs(drum.diameter / *c.diameter - 1.0) > 0.1)
+    out = "diameter " + format_quantity(drum.diameter, "mm", 4) + " against " +
+          format_quantity(*c.diameter, "mm", 4);
+  if (c.fill_fraction && std::abs(drum.fill_fraction / *c.fill_fraction - 1.0) > 0.1)
+    out += (out.empty() ? "" : ", ") + std::string("fill ") +
+           format_number(100.0 * drum.fill_fraction, 3) + " % against " +
+           format_number(100.0 * *c.fill_fraction, 3) + " %";
+  return out;
+}
+
+std::vector<std::string> drum_assumptions(const Drum& drum, const DrumRegimeThresholds& t,
+                                          const DrumLayer& layer) {
   std::vector<std::string> out = {
       "Regime thresholds are calibration targets in Froude number (not Mellmann's recalled bands): "
       "rolling to cascading at Fr = " +
@@ -110,6 +125,9 @@ std::vector<std::string> drum_assumptions(const DrumRegimeThresholds& t, const D
         (c->end_walls
              ? "."
              : "; fitted without end walls (a plane slice), this drum's end-wall friction added."));
+    if (const std::string beyond = beyond_calibration(drum, *c); !beyond.empty())
+      out.push_back("This drum lies outside the calibrated one (" + beyond +
+                    "): the fitted flowing layer is extrapolated to it.");
   } else {
     out.push_back("The flowing layer's c_delta = " + format_number(layer.layer_fraction, 3) +
                   " is the published mid value (0.1-0.3), not calibrated: `feedflow calibrate "
@@ -181,7 +199,7 @@ void check_drum(const Case& c, const Drum& drum, DesignDetail detail, DesignReco
   record.verdict = verdict.verdict();
   if (detail == DesignDetail::results) return;
   record.charts = drum_charts(drum, m, regime);
-  record.assumptions = drum_assumptions(thresholds, drum_layer(m));
+  record.assumptions = drum_assumptions(drum, thresholds, drum_layer(m));
 }
 
 }  // namespace feedflow

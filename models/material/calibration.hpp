@@ -25,8 +25,11 @@ struct DrumCalibration {
   std::string against;  // "cel" | "dem"
   std::string rung;     // what the references were, in words
   std::string scene;    // the drum case whose speed the design of experiments varied
-  bool end_walls =
-      false;  // the rung's drum had end walls (the fit kept mu_ew; a plane slice: none)
+  bool end_walls = false;  // the rung's drum had end walls (the fit kept mu_ew; a slice: none)
+  // The calibrated drum's size and fill: a drum far from them extrapolates the fit (tables
+  // written before they were recorded have none).
+  std::optional<double> diameter;       // [m]
+  std::optional<double> fill_fraction;  // [-]
   std::string commit, date;  // of the program that made the references
   CalibratedModel layer;
   std::size_t points = 0;  // design points (fitted and held out)

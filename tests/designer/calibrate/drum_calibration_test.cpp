@@ -60,6 +60,8 @@ DrumCalibration example(double fraction, double shift) {
   c.layer.coefficients = {{"layer_fraction", fraction}, {"friction_shift", shift}};
   c.layer.figures = {{"fit_rms_error", "2 %"}, {"held_out_max_error", "5 %"}};
   c.points = 1;
+  c.diameter = 0.145;
+  c.fill_fraction = 0.5;
   return c;
 }
 
@@ -116,6 +118,8 @@ TEST(DrumCalibrationToml, RoundTripsBesideTheHoppersCalibration) {
   EXPECT_DOUBLE_EQ(m.calibration->drum->layer.coefficients.at("layer_fraction"), 0.31);
   EXPECT_NEAR(m.calibration->drum->layer.coefficients.at("friction_shift"), 4.5 * kDegree, 1e-15);
   EXPECT_EQ(m.calibration->drum->points, 1u);
+  EXPECT_DOUBLE_EQ(*m.calibration->drum->diameter, 0.145);
+  EXPECT_DOUBLE_EQ(*m.calibration->drum->fill_fraction, 0.5);
   EXPECT_DOUBLE_EQ(m.calibration->discharge.at("johanson").coefficients.at("factor"), 1.83);
 
   const std::string again = with_calibration(
@@ -189,6 +193,19 @@ TEST(DrumCalibration, DesignUsesTheCalibrationAndSaysSo) {
     published = published || a.find("not calibrated") != std::string::npos;
   EXPECT_TRUE(said);
   EXPECT_TRUE(published);
+  // The calibrated drum itself is not an extrapolation; a 1 m drum at 30 % fill is, and says so.
+  const auto extrapolated = [](const DesignRecord& r) {
+    for (const auto& a : r.assumptions)
+      if (a.find("outside the calibrated one") != std::string::npos) return a;
+    return std::string();
+  };
+  EXPECT_EQ(extrapolated(after), "");
+  std::get<Drum>(c.equipment).diameter = 1.0;
+  std::get<Drum>(c.equipment).fill_fraction = 0.3;
+  EXPECT_NE(extrapolated(design_check(c))
+                .find("(diameter 1000 mm against 145 mm, fill 30 % against 50 %)"),
+            std::string::npos)
+      << extrapolated(design_check(c));
 }
 
 // A design point at 10 rpm is the bench's drum_angle_10rpm question on the CEL levels 20-5 mm:
