@@ -356,6 +356,11 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
                            " fitted speed(s) have a reference angle; see the runs in " +
                            (out / "runs").string());
   o.fit = fit_drum_layer(o.observations, cases.front().material, o.design.against == "dem");
+  // A layer that could not be fitted is not written: the material keeps what it had.
+  if (!o.fit.failure.empty())
+    throw NumericalFailure(
+        "calibration: the drum's flowing layer could not be fitted (" + o.fit.failure +
+        "); the material file is left as it was; see the runs in " + (out / "runs").string());
   const DrumCalibration table =
       drum_calibration_table(o, cases.front().name, std::get<Drum>(cases.front().equipment),
                              commit_text(kCommit, o.run_commits), today());

@@ -123,6 +123,37 @@ TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
   fs::remove_all(dir);
 }
 
+// References no layer can meet (88 deg at every speed: the friction shift would leave +-30 deg):
+// exit 4 naming the failure, and the material file as it was.
+TEST(CalibrateCommand, ADrumLayerThatCannotBeFittedIsNotWritten) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
+  feedflow::DrumCalibrationDesign d;
+  d.case_file = "cases/rotating_drum_20rpm.toml";
+  d.finest_cell = 0.01;
+  d.points = feedflow::speed_points({10 * feedflow::kRpm, 30 * feedflow::kRpm}, {});
+  for (const auto& point : d.points) {
+    const feedflow::BenchQuestion q = feedflow::drum_point_question(d, point);
+    for (const auto& p : q.points) {
+      feedflow::BenchRun run;
+      run.invocation = feedflow::bench_invocation(q, p);
+      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
+      run.commit = "test";
+      run.results = {{"dynamic_angle_of_repose", {{"value", 88.0}, {"unit", "deg"}}}};
+      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
+    }
+  }
+  const std::string before = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against cel --case cases/rotating_drum_20rpm.toml --speeds "
+      "\"10,30 rpm\" "
+      "--held-out none --finest-cell 10mm --out c",
+      dir);
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.err.find("could not be fitted"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(dir / "cases" / "materials" / "loblolly_pine.toml"), before);
+  fs::remove_all(dir);
+}
+
 // A drum speed outside the rolling regime (50 rpm cascades by the pine's thresholds) is refused
 // by flag before any run.
 TEST(CalibrateCommand, ADrumSpeedWhereItDoesNotRollIsRefused) {
