@@ -3,6 +3,8 @@
 // design check that then uses the coefficients, and bad input refused by flag.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <nlohmann/json.hpp>
 
 #include "designer/bench/bench_run.hpp"
@@ -66,17 +68,19 @@ double layer_angle(double rpm) {
   return feedflow::in_degrees(feedflow::rolling_angle_band(drum, c.material).nominal);
 }
 
-// A drum calibration on CEL runs laid down as the bench keeps them (20 and 10 mm levels 1 and
-// 0.5 deg below the known layer's angle, so Richardson at order 1 gives that angle): every run is
-// read back, the fit recovers the layer, the material file gains [calibration.drum] and keeps
-// the hopper's [calibration], and `design` on the drum says it uses it.
-TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
-  const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
+// The CEL runs of a calibration of the seed drum at `fitted` and `held_out` rpm on the 20 and
+// 10 mm levels, laid down below DIR/c/runs as the bench keeps them: each reads `angle(rpm, cell
+// size in m)` [deg] with a 0.1 deg interval.
+void lay_down_drum_runs(const fs::path& dir, const std::vector<double>& fitted,
+                        const std::vector<double>& held_out,
+                        const std::function<double(double, double)>& angle) {
   feedflow::DrumCalibrationDesign d;
   d.case_file = "cases/rotating_drum_20rpm.toml";
   d.finest_cell = 0.01;
-  d.points =
-      feedflow::speed_points({10 * feedflow::kRpm, 30 * feedflow::kRpm}, {20 * feedflow::kRpm});
+  std::vector<double> fitted_speeds, held_speeds;
+  for (double rpm : fitted) fitted_speeds.push_back(rpm * feedflow::kRpm);
+  for (double rpm : held_out) held_speeds.push_back(rpm * feedflow::kRpm);
+  d.points = feedflow::speed_points(fitted_speeds, held_speeds);
   for (const auto& point : d.points) {
     const feedflow::BenchQuestion q = feedflow::drum_point_question(d, point);
     for (const auto& p : q.points) {
@@ -85,13 +89,24 @@ TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
       run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
       run.wall_seconds = 1.0;
       run.commit = "test";
-      const double angle =
-          layer_angle(feedflow::in_rpm(point.speed)) - 50.0 * *p.cell_size;  // 1 / 0.5 deg
-      run.results = {{"dynamic_angle_of_repose", {{"value", angle}, {"unit", "deg"}}},
-                     {"dynamic_angle_of_repose_interval", {{"value", 0.1}, {"unit", "deg"}}}};
+      run.results = {
+          {"dynamic_angle_of_repose",
+           {{"value", angle(feedflow::in_rpm(point.speed), *p.cell_size)}, {"unit", "deg"}}},
+          {"dynamic_angle_of_repose_interval", {{"value", 0.1}, {"unit", "deg"}}}};
       feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
     }
   }
+}
+
+// A drum calibration on CEL runs laid down as the bench keeps them (20 and 10 mm levels 1 and
+// 0.5 deg below the known layer's angle, so Richardson at order 1 gives that angle): every run is
+// read back, the fit recovers the layer, the material file gains [calibration.drum] and keeps
+// the hopper's [calibration], and `design` on the drum says it uses it.
+TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
+  lay_down_drum_runs(dir, {10, 30}, {20}, [](double rpm, double cell) {
+    return layer_angle(rpm) - 50.0 * cell;  // 1 / 0.5 deg
+  });
   const std::string before = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
   const feedflow::testing::Run r = run_feedflow(
       "calibrate loblolly_pine --against cel --case cases/rotating_drum_20rpm.toml --speeds "
@@ -127,21 +142,7 @@ TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
 // exit 4 naming the failure, and the material file as it was.
 TEST(CalibrateCommand, ADrumLayerThatCannotBeFittedIsNotWritten) {
   const fs::path dir = scratch_folder("feedflow_calibrate_drum", true);
-  feedflow::DrumCalibrationDesign d;
-  d.case_file = "cases/rotating_drum_20rpm.toml";
-  d.finest_cell = 0.01;
-  d.points = feedflow::speed_points({10 * feedflow::kRpm, 30 * feedflow::kRpm}, {});
-  for (const auto& point : d.points) {
-    const feedflow::BenchQuestion q = feedflow::drum_point_question(d, point);
-    for (const auto& p : q.points) {
-      feedflow::BenchRun run;
-      run.invocation = feedflow::bench_invocation(q, p);
-      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
-      run.commit = "test";
-      run.results = {{"dynamic_angle_of_repose", {{"value", 88.0}, {"unit", "deg"}}}};
-      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
-    }
-  }
+  lay_down_drum_runs(dir, {10, 30}, {}, [](double, double) { return 88.0; });
   const std::string before = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
   const feedflow::testing::Run r = run_feedflow(
       "calibrate loblolly_pine --against cel --case cases/rotating_drum_20rpm.toml --speeds "
