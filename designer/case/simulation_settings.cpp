@@ -12,6 +12,7 @@ constexpr std::string_view kRemapOrders[] = {"first",           "second",
 constexpr std::string_view kMaterialFluxes[] = {"donor_cell", "limited", "plic"};
 constexpr std::string_view kMixedCellRules[] = {"equal_strain_rate", "void_first"};
 constexpr std::string_view kHopperSections[] = {"half", "full"};
+constexpr std::string_view kWallCells[] = {"staircase", "cut"};
 constexpr std::string_view kYesNo[] = {"no", "yes"};
 // Simulated times and intervals: up to an hour (a DEM second takes minutes to hours).
 constexpr Range kTimeRange{0.0, 3600.0, false, true};
@@ -71,17 +72,18 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
 std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
   using S = CelCaseSettings;
   static const FieldSpec<S> fields[] = {
-      optional_number_field<S>("cell_size", &S::cell_size, dim::length, "mm", Range::closed(1e-3, 1.0),
-                               "edge of the square Eulerian cells"),
+      optional_number_field<S>("cell_size", &S::cell_size, dim::length, "mm",
+                               Range::closed(1e-3, 1.0), "edge of the square Eulerian cells"),
       optional_number_field<S>("end_time", &S::end_time, dim::time, "s", kTimeRange,
                                "simulated time after the gravity phase"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between field snapshots"),
-      optional_number_field<S>("time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
-                               Range{0.0, 1.0, false, true},
-                               "Courant number of the step (default 0.8): the step is this fraction of a "
-                               "cell crossed at the wave speed plus the flow speed; above 1 a wave "
-                               "crosses more than a cell per step"),
+      optional_number_field<S>(
+          "time_step_safety", &S::time_step_safety, dim::dimensionless, "-",
+          Range{0.0, 1.0, false, true},
+          "Courant number of the step (default 0.8): the step is this fraction of a "
+          "cell crossed at the wave speed plus the flow speed; above 1 a wave "
+          "crosses more than a cell per step"),
       label_field<S>("remap_order", &S::remap_order, kRemapOrders,
                      "advection in the remap: first (donor cell, default), second (van Leer "
                      "MUSCL on stress, void ratio, density and nodal momentum), or second "
@@ -101,6 +103,11 @@ std::span<const FieldSpec<CelCaseSettings>> cel_case_fields() {
       label_field<S>("hopper_section", &S::hopper_section, kHopperSections,
                      "section of a wedge hopper: half (the seed's half slice with a symmetry "
                      "plane at the centre, default) or full (the full width, both walls)",
+                     Presence::optional),
+      label_field<S>("wall_cells", &S::wall_cells, kWallCells,
+                     "how inclined walls cut the grid: staircase (cells whose centre lies in a "
+                     "wall are shut, default) or cut (every cell and face open by the share on "
+                     "the material side)",
                      Presence::optional),
   };
   return fields;

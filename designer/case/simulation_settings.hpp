@@ -32,6 +32,7 @@ struct CelCaseSettings {
   std::string material_flux;                // empty: donor_cell; limited; plic
   std::string mixed_cells;                  // empty: equal_strain_rate; void_first
   std::string hopper_section;               // empty: half; full
+  std::string wall_cells;                   // empty: staircase; cut
 };
 
 std::span<const FieldSpec<DemCaseSettings>> dem_case_fields();

@@ -31,6 +31,7 @@ std::string model_label_of(const Case& c, const cel::RemapOptions& o, const cel:
   if (o.material_flux == cel::MaterialFlux::plic) remap += ", PLIC";
   if (o.material_flux == cel::MaterialFlux::limited) remap += ", limited volume fraction";
   if (c.cel.mixed_cells == "void_first") remap += ", void-first mixed cells";
+  if (c.cel.wall_cells == "cut") remap += ", cut cells at the walls";
   return std::string("CEL-FEM ") + cel::symmetry_name(grid.symmetry) + " (G-B hypoplastic, " + remap + " remap)";
 }
 
@@ -62,6 +63,7 @@ CelSceneAdapter::CelSceneAdapter(const SimulationRequest& request, cel::CelScene
   if (c.cel.mixed_cells == "equal_strain_rate")
     scene_.options.mixed_cells = cel::MixedCellRule::equal_strain_rate;
   if (c.cel.time_step_safety) scene_.options.time_step.safety = *c.cel.time_step_safety;
+  if (c.cel.wall_cells == "cut") scene_.options.wall_cells = cel::WallCells::cut;
   model_label_ = model_label_of(c, scene_.options.remap, scene_.grid);
 }
 

@@ -22,6 +22,7 @@ struct CellFields {
   std::vector<Eigen::Matrix3d> stress;   // Cauchy stress, tension positive [Pa]
   std::vector<double> void_ratio;        // [-]
   std::vector<std::uint8_t> solid;       // kSolid*: no material, no transport; 0: fluid
+  std::vector<double> open_fraction;     // open volume / cell volume: below 1 in cut cells only
   // Per step, written by the phases:
   std::vector<double> wave_speed;        // c_d bound of the last time-step pass [m/s]
   std::vector<double> volume_rate;       // tr D of the last Lagrangian phase [1/s]
@@ -31,9 +32,14 @@ struct CellFields {
   double density(std::size_t c, double cell_volume) const {  // rho = M / (vf V) [kg/m^3]
     return volume_fraction[c] > 0.0 ? mass[c] / (volume_fraction[c] * cell_volume) : 0.0;
   }
+  // Material volume over the cell's open volume (the fill a cut cell's material sees) [-].
+  double open_volume_fraction(std::size_t c) const {
+    return open_fraction[c] > 0.0 ? volume_fraction[c] / open_fraction[c] : volume_fraction[c];
+  }
 };
 
-// Whether cell c touches a solid cell across a face or a corner: a cell at a wall's staircase.
+// Whether cell c touches a solid cell across a face or a corner, or is cut by a wall: a cell at a
+// wall's staircase.
 bool at_staircase(const CelGrid& grid, const CellFields& cells, std::size_t c);
 
 // Kinematic constraint of a node: which velocity components are prescribed (to zero).

@@ -82,9 +82,10 @@ void CelSceneRun::prepare(std::ostream& log) {
   updates_at_prepare_ = solver_.cell_updates();
   steps_at_prepare_ = solver_.step_count();
   const CelOptions& o = scene_.options;
-  log << "CEL-FEM plan (" << symmetry_name(scene_.grid.symmetry) << ", hypoplastic G-B, remap: " << describe(o.remap)
-      << "; mixed cells: "
-      << (o.mixed_cells == MixedCellRule::void_first ? "void first" : "equal strain rate") << ", "
+  log << "CEL-FEM plan (" << symmetry_name(scene_.grid.symmetry)
+      << ", hypoplastic G-B, remap: " << describe(o.remap) << "; mixed cells: "
+      << (o.mixed_cells == MixedCellRule::void_first ? "void first" : "equal strain rate")
+      << "; walls: " << (o.wall_cells == WallCells::cut ? "cut cells" : "staircase") << ", "
       << omp_get_max_threads() << " OpenMP thread(s)):\n";
   for (const auto& line : scene_.plan) log << "  " << line << '\n';
   const GravityPhase& g = scene_.gravity;

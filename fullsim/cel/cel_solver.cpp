@@ -18,8 +18,27 @@ CelSolver::CelSolver(const CelGrid& grid, const HypoplasticModel& model,
                                 "line and must be free slip");
   cells_.resize(grid_.cell_count());
   nodes_.resize(grid_.node_count());
-  mark_wall_cells(grid_, place_walls(options_.rigid_walls, time_), cells_);
+  mark_walls(place_walls(options_.rigid_walls, time_));
   refresh_nodes();
+}
+
+void CelSolver::mark_walls(const std::vector<PlacedWall>& walls) {
+  if (options_.wall_cells == WallCells::staircase) {
+    mark_wall_cells(grid_, walls, cells_);
+    return;
+  }
+  std::vector<std::uint8_t> key;
+  bool moving = false;
+  for (const auto& w : options_.rigid_walls) {
+    key.push_back(w.present(time_));
+    moving = moving || (w.present(time_) && w.moving(time_));
+  }
+  if (moving || key != cut_walls_ || cut_.open.empty()) {
+    cut_ = cut_cell_geometry(grid_, walls);
+    cut_walls_ = moving ? std::vector<std::uint8_t>{} : key;
+  }
+  mark_cut_cells(cut_, cells_);
+  remap_.set_cut_cells(&cut_);
 }
 
 void CelSolver::add_material(const MaterialBlock& b) {
@@ -40,8 +59,9 @@ void CelSolver::add_material(const MaterialBlock& b) {
   const HypoplasticParameters& hp = model_.parameters;
   remap_.set_grain_density(grain_density, {hp.e_d0, hp.h_s, hp.n});
   const auto walls = place_walls(options_.rigid_walls, time_);
+  const bool cut = options_.wall_cells == WallCells::cut;
   for (std::size_t c = 0; c < grid_.cell_count(); ++c) {
-    if (cells_.solid[c] || distance_to_walls(walls, grid_.cell_centre(c)) < 0.0) continue;
+    if (cells_.solid[c] || (!cut && distance_to_walls(walls, grid_.cell_centre(c)) < 0.0)) continue;
     const Eigen::Vector2d lo = grid_.cell_centre(c).array() - 0.5 * h;
     const double x0 = std::max(lo.x(), b.lower.x()), x1 = std::min(lo.x() + h, b.upper.x());
     const double wy = std::max(0.0, std::min(lo.y() + h, b.upper.y()) - std::max(lo.y(), b.lower.y()));
@@ -49,7 +69,10 @@ void CelSolver::add_material(const MaterialBlock& b) {
     // The overlap's share of the cell volume (r-weighted when axisymmetric: int r dr over
     // [x0, x1] is (x1 - x0) times the depth at its middle).
     const double overlap = (x1 - x0) * grid_.depth_at(0.5 * (x0 + x1)) * wy;
-    const double add = std::min(overlap / grid_.cell_volume(c), 1.0 - cells_.volume_fraction[c]);
+    // A cut cell takes the block's share of its open part.
+    const double open = cells_.open_fraction[c];
+    const double add =
+        std::min(overlap * open / grid_.cell_volume(c), open - cells_.volume_fraction[c]);
     if (add <= 0.0) continue;
     const double m_add = add * grid_.cell_volume(c) * b.bulk_density;
     const double m_old = cells_.mass[c], vf_old = cells_.volume_fraction[c];
@@ -96,7 +119,7 @@ void CelSolver::refresh_active_cells() {
   active_.clear();
   for (std::size_t c = 0; c < grid_.cell_count(); ++c)
     if (!cells_.solid[c] && cells_.mass[c] > 0.0 &&
-        cells_.volume_fraction[c] > options_.min_volume_fraction)
+        cells_.open_volume_fraction(c) > options_.min_volume_fraction)
       active_.push_back(c);
 }
 
@@ -110,7 +133,7 @@ double CelSolver::gravity_factor(double t) const {
 CelStepReport CelSolver::step() {
   CelStepReport report;
   const auto walls = place_walls(options_.rigid_walls, time_);
-  mark_wall_cells(grid_, walls, cells_);
+  mark_walls(walls);
   refresh_active_cells();
   report.time_step = stable_time_step(grid_, active_, model_, options_.time_step, options_.forces,
                                       nodes_, cells_);
@@ -244,6 +267,9 @@ void CelSolver::restore(const CelSolverState& s) {
     throw std::invalid_argument("CEL state of another grid or wall set");
   cells_ = s.cells;
   cells_.corner_force.assign(grid_.cell_count() * kNodesPerCell, NodeVector::Zero());
+  cells_.open_fraction.assign(grid_.cell_count(), 1.0);  // taken again from the walls below
+  cut_walls_.clear();
+  cut_.open.clear();
   nodes_ = s.nodes;
   void_node_mass_ = s.void_node_mass;
   time_ = s.time;
@@ -259,6 +285,7 @@ void CelSolver::restore(const CelSolverState& s) {
     options_.rigid_walls[k].motion_end = s.wall_motion_ends[k];
   }
   discharge_ = s.discharge;
+  mark_walls(place_walls(options_.rigid_walls, time_));
 }
 
 double CelSolver::total_mass() const {

@@ -11,10 +11,11 @@
 
 #include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/cut_cells.hpp"
 #include "fullsim/cel/discharge_ledger.hpp"
 #include "fullsim/cel/lagrangian_phase.hpp"
-#include "fullsim/cel/remap_phase.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
+#include "fullsim/cel/remap_phase.hpp"
 #include "fullsim/cel/rigid_wall.hpp"
 #include "fullsim/cel/stable_time_step.hpp"
 #include "fullsim/cel/turning_frame.hpp"
@@ -32,6 +33,7 @@ struct CelOptions {
   WallContactOptions contact{};
   RemapOptions remap{};  // advection order of the cell state, material flux (PLIC)
   MixedCellRule mixed_cells = MixedCellRule::equal_strain_rate;  // models.md 2.3 item 7
+  WallCells wall_cells = WallCells::staircase;  // how inclined walls cut the grid (cut_cells.hpp)
   NodeVector gravity = NodeVector(0.0, -9.81);  // [m/s^2], in the laboratory
   TurningFrame frame{};  // the laboratory unless started (a drum: the frame of its shell)
   double gravity_ramp_time = 0.0;  // smooth step 0 -> 1 over this time [s]; 0: at once
@@ -84,7 +86,8 @@ class CelSolver {
   CelSolver(const CelGrid& grid, const HypoplasticModel& model, const CelOptions& options);
 
   // Adds material to the cells the block overlaps (volume fraction = overlapped area share),
-  // except cells whose centre lies inside a rigid wall present at the current time.
+  // except cells whose centre lies inside a rigid wall present at the current time (staircase
+  // walls), or to the open part of the cells it overlaps (cut cells).
   void add_material(const MaterialBlock& block);
   void set_solid(std::size_t cell);
   // Gives every node that carries mass the velocity v.
@@ -130,6 +133,9 @@ class CelSolver {
 
  private:
   void refresh_active_cells();
+  // Marks the cells the walls placed at the current time shut (staircase) or cut (cut cells: the
+  // geometry is taken again when a wall moves, or appears or goes).
+  void mark_walls(const std::vector<PlacedWall>& walls);
   void refresh_nodes();
   double gravity_factor(double t) const;
   // The Courant number a blow-up message advises: half the one used, at most the default.
@@ -146,6 +152,8 @@ class CelSolver {
   CellFields cells_;
   NodeFields nodes_;
   RemapPhase remap_;
+  CutCellGeometry cut_;
+  std::vector<std::uint8_t> cut_walls_;  // which walls cut_ was taken for (empty: not yet)
   std::vector<std::size_t> active_;
   double void_node_mass_ = 0.0;
   double time_ = 0.0;

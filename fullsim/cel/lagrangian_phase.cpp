@@ -55,7 +55,7 @@ CellUpdateReport update_cell_states(const CelGrid& grid,
     const Eigen::Matrix3d w = 0.5 * (l - l.transpose());
     cells.volume_rate[c] = d.trace();
     MaterialPointState s{cells.stress[c], cells.void_ratio[c]};
-    const double vf = cells.volume_fraction[c];
+    const double vf = cells.open_volume_fraction(c);  // a cut cell's void is in its open part
     const MixedCellRule cell_rule =
         vf < kNearlyEmpty && at_staircase(grid, cells, c) ? MixedCellRule::void_first : rule;
     const Eigen::Matrix3d dm = material_rate_of_deformation(d, vf, dt, cell_rule);

@@ -38,20 +38,23 @@ std::size_t node_on_line(const CelGrid& g, int axis, int along, int across) {
 
 bool is_solid(const CellFields& cells, std::size_t c) { return c != kOutside && cells.solid[c]; }
 
-// Transport volume through face (axis, along, across), positive towards `hi` [m^3/m or m^3/rad].
-double transport_volume(const CelGrid& g, const NodeFields& nodes, const Face& f, int axis,
-                        int along, int across, double dt, const CellFields& cells) {
-  if (is_solid(cells, f.lo) || is_solid(cells, f.hi)) return 0.0;
-  return dt * g.face_area(axis, along, across) * 0.5 *
-         (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
-}
-
 template <class T>
 void zero(std::vector<T>& v, const T& z) {
   std::fill(v.begin(), v.end(), z);
 }
 
 }  // namespace
+
+double RemapPhase::transport_volume(const CelGrid& g, const NodeFields& nodes, int axis, int along,
+                                    int across, double dt, const CellFields& cells) const {
+  const Face f = face(g, axis, along, across);
+  // Staircase: a face of a solid cell is shut. Cut cells: a face is open by its aperture.
+  const double open = cut_cells_ ? cut_cells_->aperture(axis, along, across)
+                                 : (is_solid(cells, f.lo) || is_solid(cells, f.hi) ? 0.0 : 1.0);
+  if (open <= 0.0) return 0.0;
+  return dt * open * g.face_area(axis, along, across) * 0.5 *
+         (nodes.velocity[f.node_a][axis] + nodes.velocity[f.node_b][axis]);
+}
 
 void RemapPhase::Contents::resize(std::size_t n) {
   volume.assign(n, 0.0);
@@ -96,7 +99,7 @@ double RemapPhase::material_flux(const CelGrid& g, const CellFields& cells, int 
   const double vm = now_.material_volume[donor];
   if (vm <= 0.0) return 0.0;
   const double volume = now_.volume[donor], vf = vf_[donor], slab = std::abs(dv);
-  const double donor_cell = vf * slab;
+  const double donor_cell = std::min(vf * slab, vm);
   if (options_.material_flux == MaterialFlux::donor_cell || vf >= 1.0) return donor_cell;
   const int i = g.cell_i(donor), j = g.cell_j(donor);
   // Whether a neighbour is a wall or beyond the box; the volume fraction of one (walls mirror the
@@ -173,7 +176,7 @@ RemapPhase::SweepResult RemapPhase::sweep(const CelGrid& g, double dt, int axis,
     };
     for (int k = k_first; k <= k_last; ++k) {
       const Face f = face(g, axis, k, m);
-      const double dv = transport_volume(g, nodes, f, axis, k, m, dt, cells);
+      const double dv = transport_volume(g, nodes, axis, k, m, dt, cells);
       if (dv == 0.0) continue;
       const std::size_t donor = dv > 0.0 ? f.lo : f.hi;
       const auto exchange = [&](auto& d, const auto& amount) {
@@ -182,7 +185,8 @@ RemapPhase::SweepResult RemapPhase::sweep(const CelGrid& g, double dt, int axis,
       };
       exchange(delta_.volume, dv);
       if (donor == kOutside) continue;  // void enters through an outflow face
-      const double share = std::abs(dv) / now_.volume[donor];
+      // A cut cell's share is taken of the whole cell: a sliver gives what it holds (below).
+      const double share = std::abs(dv) / (cut_cells_ ? g.cell_volume(donor) : now_.volume[donor]);
       worst = std::max(worst, share);
       const double toward = dv > 0.0 ? 1.0 : -1.0;  // the face on the donor's high/low side
       const double vm = material_flux(g, cells, axis, donor, dv, toward);
@@ -317,13 +321,13 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
   now_.resize(n);
   delta_.resize(n);
   // The Lagrangian cell: V^L = V + the outward transport volumes of its flux-carrying faces.
-  for (std::size_t c = 0; c < n; ++c) now_.volume[c] = g.cell_volume(c);
+  for (std::size_t c = 0; c < n; ++c) now_.volume[c] = cells.open_fraction[c] * g.cell_volume(c);
   for (int axis = 0; axis < kDimension; ++axis) {
     const int n_along = axis == 0 ? g.nx : g.ny, n_across = axis == 0 ? g.ny : g.nx;
     for (int m = 0; m < n_across; ++m)
       for (int k = outflow_lo_[axis] ? 0 : 1; k <= (outflow_hi_[axis] ? n_along : n_along - 1); ++k) {
         const Face f = face(g, axis, k, m);
-        const double dv = transport_volume(g, nodes, f, axis, k, m, dt, cells);
+        const double dv = transport_volume(g, nodes, axis, k, m, dt, cells);
         if (f.lo != kOutside) now_.volume[f.lo] += dv;
         if (f.hi != kOutside) now_.volume[f.hi] -= dv;
       }
@@ -364,8 +368,9 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
   for (long k = 0; k < cells_n; ++k) {
     const auto c = static_cast<std::size_t>(k);
     const double vm = now_.material_volume[c];
-    const double v0 = g.cell_volume(c);
-    const double vf = vm / v0;
+    const double open = cells.open_fraction[c];
+    const double v0 = open * g.cell_volume(c);  // the open volume
+    const double vf = v0 > 0.0 ? vm / v0 : (vm > 0.0 ? 2.0 : 0.0);
     if (!cells.solid[c]) {
       largest = std::max(largest, vf);
       smallest = std::min(smallest, vf);
@@ -378,7 +383,7 @@ RemapReport RemapPhase::remap(const CelGrid& g, const BoxWalls& walls, double dt
       cells.void_ratio[c] = 0.0;
       continue;
     }
-    cells.volume_fraction[c] = std::min(vf, 1.0);  // overfilled: keep the mass, raise rho
+    cells.volume_fraction[c] = std::min(vf, 1.0) * open;  // overfilled: keep the mass, raise rho
     cells.mass[c] = now_.mass[c];
     cells.stress[c] = now_.stress_volume[c] / vm;
     cells.void_ratio[c] = now_.void_mass[c] / now_.mass[c];

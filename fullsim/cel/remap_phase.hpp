@@ -49,6 +49,7 @@
 
 #include "fullsim/cel/box_walls.hpp"
 #include "fullsim/cel/cel_fields.hpp"
+#include "fullsim/cel/cut_cells.hpp"
 
 namespace feedflow::cel {
 
@@ -102,6 +103,9 @@ class RemapPhase {
     densest_ = densest;
   }
   double grain_density() const { return grain_density_; }
+  // Cut cells (cut_cells.hpp): a face carries flux through its aperture, a cell holds material in
+  // its open part. nullptr (the default): the staircase, where solid cells' faces are shut.
+  void set_cut_cells(const CutCellGeometry* geometry) { cut_cells_ = geometry; }
 
   // `x_first` chooses the sweep order. Node masses are re-lumped; velocities get the
   // constraints applied.
@@ -119,6 +123,10 @@ class RemapPhase {
   };
   SweepResult sweep(const CelGrid& grid, double dt, int axis, const CellFields& cells,
                     const NodeFields& nodes);
+  // Transport volume through the face normal to `axis` on node line `along` in cell line `across`,
+  // positive towards the higher cell [m^3/m or m^3/rad].
+  double transport_volume(const CelGrid& grid, const NodeFields& nodes, int axis, int along,
+                          int across, double dt, const CellFields& cells) const;
   void refresh_cell_state(const CelGrid& grid, const CellFields& cells);
   // Material volume given by `donor` through a face of transport volume |dv| on its `toward`
   // side (+1 high, -1 low) along `axis`.
@@ -135,6 +143,7 @@ class RemapPhase {
   double cut_;
   double grain_density_ = 0.0;
   DensestState densest_{};
+  const CutCellGeometry* cut_cells_ = nullptr;
   bool outflow_lo_[kDimension] = {false, false};  // left, bottom
   bool outflow_hi_[kDimension] = {false, false};  // right, top
   Contents now_, delta_;
