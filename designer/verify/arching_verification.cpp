@@ -34,6 +34,28 @@ std::optional<OutletOutcome> outcome_of(const BenchRun& run) {
                                                                         : OutletOutcome::flows;
 }
 
+// The run's flow pattern, when it flowed and measured one (an arched run has no steady window).
+std::optional<ParticleFlowPattern> flow_pattern_of(const BenchRun& run, const std::string& law,
+                                                   double outlet) {
+  const auto& r = run.results;
+  if (!run.done() || !r.contains("flow_pattern") || !r["flow_pattern"]["value"].is_string())
+    return std::nullopt;
+  const auto number = [&](const char* key) -> std::optional<double> {
+    if (!r.contains(key) || !r[key]["value"].is_number()) return std::nullopt;
+    return r[key]["value"].get<double>();
+  };
+  std::string read;
+  if (const auto ratio = number("wall_to_centre_speed_ratio"))
+    read += "wall/centre speed " + format_number(*ratio, 3);
+  if (const auto fifo = number("fifo_index"))
+    read += (read.empty() ? "" : ", ") + std::string("FIFO index ") + format_number(*fifo, 3);
+  if (const auto dead = number("stagnant_zone_width"); dead && *dead > 0.0)
+    read += ", stagnant zone " + format_quantity(*dead * 1e-3, "mm", 3);
+  const std::string where = "DEM (" + law + ") at the design outlet " + mm(outlet);
+  return ParticleFlowPattern{r["flow_pattern"]["value"].get<std::string>(),
+                             read.empty() ? where : where + ": " + read, read};
+}
+
 std::string outcomes(const WidthBisection& b) {
   std::string s;
   for (const auto& step : b.steps)
@@ -177,6 +199,9 @@ ArchingVerification verify_arching(const std::string& case_file,
   v.design_run = bench_run_folder(
       runs_folder, arching_run_question(case_file, sets, h.outlet_width), arching_run_point());
   v.at_design = judge_at(h.outlet_width);
+  if (const auto run = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
+                                    arching_run_point(), ".", v.design_run))
+    v.flow_pattern = flow_pattern_of(*run, plan.law, h.outlet_width);
   if (!v.at_design) return v;
   // The bisection's runs already kept cost nothing: those it would read back before its first
   // new one.
@@ -219,6 +244,24 @@ void apply_arching_verification(const Case& c, const ArchingVerificationPlan& pl
                      mm(std::get<Hopper>(c.equipment).outlet_width);
     observed.rung = Rung::L3;
     replace_beside(record.results, "arching", observed);
+  }
+  const auto reduced_pattern =
+      std::find_if(record.results.begin(), record.results.end(),
+                   [](const auto& r) { return r.first == "flow_pattern"; });
+  if (v.flow_pattern && reduced_pattern != record.results.end() &&
+      std::holds_alternative<std::string>(reduced_pattern->second.value)) {
+    const std::string before = std::get<std::string>(reduced_pattern->second.value);
+    Estimate observed;
+    observed.value = v.flow_pattern->pattern;
+    observed.model = v.flow_pattern->model;
+    observed.rung = Rung::L3;
+    replace_beside(record.results, "flow_pattern", observed);
+    notes.push_back(
+        std::string(before == v.flow_pattern->pattern ? "flow pattern verified"
+                                                      : "flow pattern contradicted") +
+        " on the " + rung + ": reduced " + before + ", DEM " + v.flow_pattern->pattern +
+        " at the design outlet" +
+        (v.flow_pattern->read.empty() ? std::string() : " (" + v.flow_pattern->read + ")"));
   }
   const WidthBisection& b = v.bisection;
   const std::string what = quantity_label(plan.quantity);

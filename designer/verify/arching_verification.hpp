@@ -62,8 +62,17 @@ struct ArchingVerificationCost {
 ArchingVerificationCost estimate_arching_verification(const Case& c, const DesignRecord& record,
                                                       const ArchingVerificationPlan& plan);
 
+// The flow pattern the design outlet's DEM run read by the layer method, when it flowed long
+// enough for a steady window: "mass" or "funnel", with what it was read from.
+struct ParticleFlowPattern {
+  std::string pattern;
+  std::string model;  // "DEM (law) at the design outlet 45 mm: " + read
+  std::string read;   // "wall/centre speed 0.97, FIFO index 0.97[, stagnant zone 30 mm]"
+};
+
 struct ArchingVerification {
   std::optional<OutletOutcome> at_design;  // the design outlet's run
+  std::optional<ParticleFlowPattern> flow_pattern;  // of the design outlet's run
   WidthBisection bisection;
   std::string status = "done";       // or why it stopped
   double wall_seconds = 0.0;         // of the runs made now
@@ -72,8 +81,10 @@ struct ArchingVerification {
 };
 
 // Runs the plan below `runs_folder` (runs already there are read back). The design outlet's run
-// goes first; its wall time, times the bisection's runs, must fit `budget_seconds`, or the
-// bisection is not started and the status says what it would take.
+// goes first (it also verifies the flow pattern: the particle rung reads it on wedges and cones
+// alike, where the continuum's cone does not converge); its wall time, times the bisection's runs,
+// must fit `budget_seconds`, or the bisection is not started and the status says what it would
+// take.
 ArchingVerification verify_arching(const std::string& case_file,
                                    const std::vector<std::string>& sets, const Hopper& hopper,
                                    const ArchingVerificationPlan& plan, double budget_seconds,

@@ -137,6 +137,28 @@ bool scene_verification(const VerificationRequest& args, const Case& c,
   return true;
 }
 
+// A cone's flow pattern inside its margin: the continuum's cone does not converge under
+// refinement, so the particle rung's run at the design outlet reads it (`--verify dem`, the
+// layer method in 3D); its command and estimate. Not run by auto: the run takes hours.
+std::string cone_flow_pattern_command(const VerificationRequest& args, const Case& c,
+                                      const DesignRecord& record) {
+  const Estimate* rate = find_estimate(record.results, "mass_flow_rate");
+  const double q =
+      rate && std::holds_alternative<double>(rate->value) ? std::get<double>(rate->value) : 0.0;
+  try {
+    const DemRunEstimate e = estimate_dem_hopper_run(c, q);
+    return "to settle the flow pattern on the particle rung (the continuum's cone does not "
+           "converge "
+           "under refinement): " +
+           this_check(args) + " --verify dem --budget " + budget_holding(e.seconds) +
+           " (its run at the design outlet reads the pattern by the layer method, " + e.text() +
+           (args.mode == "auto" ? "; not run by auto" : "") + ")";
+  } catch (const InputError& e) {
+    return "the flow pattern cannot be verified on the particle rung with this case: " +
+           std::string(e.what());
+  }
+}
+
 }  // namespace
 
 bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord& record) {
@@ -147,7 +169,12 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
   const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
   const bool rate_marginal = marginal_on(record, "mass_flow_rate");
+  // A wedge's flow pattern is verified on the continuum with its rate (its pattern converges); a
+  // cone's on the particle rung.
+  const bool pattern_marginal = marginal_on(record, "flow_pattern_margin");
   const std::string again = this_check(args);
+  if (pattern_marginal && !h->is_wedge())
+    record.verdict.reasons.push_back(cone_flow_pattern_command(args, c, record));
   if (marginal_on(record, "critical_outlet_width") ||
       marginal_on(record, "mechanical_arching_width")) {
     // The continuum cannot arch: the particle rung verifies arching, asked for (dem) or, within
@@ -199,16 +226,19 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
                      ", a --budget that holds it runs it"));
     }
   }
-  const bool wanted = args.mode == "cel" || (args.mode == "auto" && rate_marginal);
+  const bool wedge_pattern = pattern_marginal && h->is_wedge();
+  const bool wanted =
+      args.mode == "cel" || (args.mode == "auto" && (rate_marginal || wedge_pattern));
   if (!wanted) {
-    if (rate_marginal) {
+    if (rate_marginal || wedge_pattern) {
       const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
       const std::string command = again + " --verify auto --tolerance " + quoted(args.tolerance) +
                                   " --budget " + budget_holding(plan.estimated_seconds);
       record.verdict.reasons.push_back(
-          plan.cells_across.empty()
-              ? "the discharge rate cannot be verified: " + plan.description
-              : "to settle the discharge rate: " + command + " (" + plan.description + ")");
+          plan.cells_across.empty() ? "the discharge rate cannot be verified: " + plan.description
+                                    : std::string(rate_marginal ? "to settle the discharge rate"
+                                                                : "to settle the flow pattern") +
+                                          ": " + command + " (" + plan.description + ")");
     }
     return true;
   }

@@ -62,6 +62,28 @@ TEST(DesignVerify, EscalatesOnlyWhatIsInsideItsBand) {
   fs::remove_all(dir);
 }
 
+// A flow pattern inside its 3 deg margin names the rung that reads it: a wedge's (47 deg, 2.6 deg
+// inside its 49.6 deg limit) the continuum's, with the rate's CEL levels; a cone's (38 deg, 1.6
+// deg inside Arnold-McLean's 39.6 deg) the particle rung's run at the design outlet, with its
+// estimate, since the continuum's cone pattern does not converge under refinement.
+TEST(DesignVerify, AMarginalFlowPatternNamesTheRungThatReadsIt) {
+  const fs::path dir = scratch_folder("feedflow_verify_pattern", true);
+  const auto wedge = design_json(dir, "--set hopper.semi_angle=47deg");
+  EXPECT_TRUE(said(wedge,
+                   "to settle the flow pattern: feedflow design cases/pilot_hopper.toml --set "
+                   "hopper.semi_angle=47deg --verify auto --tolerance 10% --budget "));
+  const auto cone =
+      design_json(dir, "--set hopper.semi_angle=38deg --set hopper.outlet_width=120mm",
+                  "cases/conical_hopper.toml");
+  EXPECT_TRUE(
+      said(cone,
+           "to settle the flow pattern on the particle rung (the continuum's cone does "
+           "not converge under refinement): feedflow design cases/conical_hopper.toml "
+           "--set hopper.semi_angle=38deg --set hopper.outlet_width=120mm --verify dem --budget "));
+  EXPECT_TRUE(said(cone, "spheres"));
+  fs::remove_all(dir);
+}
+
 // A 240 mm outlet verified at 40 %: two CEL levels (40 and 20 mm cells) in seconds; the rate is
 // the CEL estimate with its error bar (rung L2), the reduced rate beside it, and the verdict says
 // verified or contradicted with both numbers. The same command again makes no run.

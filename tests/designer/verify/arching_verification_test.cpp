@@ -118,5 +118,59 @@ TEST(ArchingVerification, TheBudgetCountsOnlyTheRunsNotKept) {
   std::filesystem::remove_all(runs);
 }
 
+// A conical hopper's flow pattern goes to the particle rung (the continuum's does not converge on
+// a cone): the design outlet's DEM run, read back, puts its layer-method pattern in place of the
+// reduced one (rung L3, the reduced one beside it) with what it was read from, and the verdict
+// says verified or contradicted with both; a run that arched measured none and leaves it as it is.
+TEST(ArchingVerification, TheDesignOutletsRunVerifiesAConesFlowPattern) {
+  BenchQuestion q;
+  q.case_file = "tests/data/dem_cone_twin.toml";
+  const std::filesystem::path runs = std::filesystem::temp_directory_path() /
+                                     ("feedflow_cone_pattern_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(runs);
+  const std::string case_file =
+      (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
+  const Case c = load_case(case_file, std::vector<SetOverride>{});
+  const Hopper& h = std::get<Hopper>(c.equipment);
+  const DesignRecord reduced = design_check(c, ModelChoices{});
+  const auto reduced_pattern =
+      std::get<std::string>(find_estimate(reduced.results, "flow_pattern")->value);
+  const auto plan = plan_arching_verification(c, reduced, 0.002);
+  const auto verified = [&](const nlohmann::ordered_json& measured, const std::string& arching) {
+    std::filesystem::remove_all(runs);
+    testing::lay_down_run(q, BenchPoint{}, runs, h.outlet_width, arching, 60.0, "aaaa", measured);
+    const ArchingVerification v = verify_arching(case_file, {}, h, plan, 1.0, runs, nullptr);
+    DesignRecord record = reduced;
+    apply_arching_verification(c, plan, v, record);
+    return record;
+  };
+  const std::string other = reduced_pattern == "mass" ? "funnel" : "mass";
+  const DesignRecord r = verified({{"flow_pattern", {{"value", other}}},
+                                   {"wall_to_centre_speed_ratio", {{"value", 0.05}}},
+                                   {"fifo_index", {{"value", 0.41}}},
+                                   {"stagnant_zone_width", {{"value", 30.0}}}},
+                                  "flowing");
+  const Estimate* dem = find_estimate(r.results, "flow_pattern");
+  ASSERT_NE(dem, nullptr);
+  EXPECT_EQ(dem->rung, Rung::L3);
+  EXPECT_EQ(std::get<std::string>(dem->value), other);
+  EXPECT_EQ(std::get<std::string>(find_estimate(r.results, "flow_pattern_reduced_model")->value),
+            reduced_pattern);
+  const std::string said = "flow pattern contradicted on the particle rung (DEM, " + plan.law +
+                           " law): reduced " + reduced_pattern + ", DEM " + other;
+  bool found = false;
+  for (const auto& reason : r.verdict.reasons)
+    found = found || (reason.find(said) != std::string::npos &&
+                      reason.find("wall/centre speed 0.05, FIFO index 0.41, stagnant zone 30 mm") !=
+                          std::string::npos);
+  EXPECT_TRUE(found) << said;
+  const DesignRecord same = verified({{"flow_pattern", {{"value", reduced_pattern}}}}, "flowing");
+  EXPECT_EQ(find_estimate(same.results, "flow_pattern")->rung, Rung::L3);
+  const DesignRecord arched = verified({}, "arched");
+  EXPECT_EQ(find_estimate(arched.results, "flow_pattern")->rung, Rung::L0);
+  EXPECT_EQ(find_estimate(arched.results, "flow_pattern_reduced_model"), nullptr);
+  std::filesystem::remove_all(runs);
+}
+
 }  // namespace
 }  // namespace feedflow

@@ -15,8 +15,8 @@ namespace feedflow::testing {
 inline void lay_down_run(const std::string& case_file, const std::vector<std::string>& sets,
                          const std::filesystem::path& source_root,
                          const std::filesystem::path& runs, double width,
-                         const std::string& arching, double wall_seconds,
-                         const std::string& commit) {
+                         const std::string& arching, double wall_seconds, const std::string& commit,
+                         const nlohmann::ordered_json& more = {}) {
   const BenchQuestion at = arching_run_question(case_file, sets, width);
   BenchRun run;
   run.invocation = bench_invocation(at, arching_run_point());
@@ -24,6 +24,7 @@ inline void lay_down_run(const std::string& case_file, const std::vector<std::st
   run.wall_seconds = wall_seconds;
   run.commit = commit;
   run.results = {{"arching", {{"value", arching}}}};
+  for (const auto& [key, value] : more.items()) run.results[key] = value;
   save_bench_run(bench_run_folder(runs, at, arching_run_point()), run);
 }
 
@@ -31,13 +32,13 @@ inline void lay_down_run(const std::string& case_file, const std::vector<std::st
 // a bench point's verification names it.
 inline void lay_down_run(const BenchQuestion& q, const BenchPoint& p,
                          const std::filesystem::path& runs, double width,
-                         const std::string& arching, double wall_seconds,
-                         const std::string& commit) {
+                         const std::string& arching, double wall_seconds, const std::string& commit,
+                         const nlohmann::ordered_json& more = {}) {
   std::vector<std::string> sets = q.sets;
   sets.insert(sets.end(), p.sets.begin(), p.sets.end());
   lay_down_run(
       (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string(), sets,
-      ".", runs, width, arching, wall_seconds, commit);
+      ".", runs, width, arching, wall_seconds, commit, more);
 }
 
 }  // namespace feedflow::testing
