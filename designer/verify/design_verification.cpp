@@ -148,8 +148,7 @@ std::string cone_flow_pattern_command(const VerificationRequest& args, const Cas
   try {
     const DemRunEstimate e = estimate_dem_hopper_run(c, q);
     return "to settle the flow pattern on the particle rung (the continuum's cone does not "
-           "converge "
-           "under refinement): " +
+           "converge under refinement): " +
            this_check(args) + " --verify dem --budget " + budget_holding(e.seconds) +
            " (its run at the design outlet reads the pattern by the layer method, " + e.text() +
            (args.mode == "auto" ? "; not run by auto" : "") + ")";
