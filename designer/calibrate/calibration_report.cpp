@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <sstream>
 
+#include "designer/calibrate/discharge_fit.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
-
-std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
 
 std::size_t fitted_count(const CalibrationOutcome& o) {
   return static_cast<std::size_t>(std::count_if(o.observations.begin(), o.observations.end(),

@@ -27,6 +27,18 @@ std::string number(double x) {
   return std::string(text, end);
 }
 
+// "figures = { name = "text", ... }" and a newline; nothing without figures.
+void write_figures(std::ostream& o, const std::map<std::string, std::string>& figures) {
+  if (figures.empty()) return;
+  o << "figures = {";
+  bool first = true;
+  for (const auto& [name, text] : figures) {
+    o << (first ? " " : ", ") << name << " = " << quoted(text);
+    first = false;
+  }
+  o << " }\n";
+}
+
 }  // namespace
 
 std::string calibration_toml(const Calibration& c, const std::vector<CalibrationPointRecord>& points) {
@@ -50,15 +62,7 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
       first = false;
     }
     o << " }\n";
-    if (!model.figures.empty()) {
-      o << "figures = {";
-      first = true;
-      for (const auto& [name, text] : model.figures) {
-        o << (first ? " " : ", ") << name << " = " << quoted(text);
-        first = false;
-      }
-      o << " }\n";
-    }
+    write_figures(o, model.figures);
   }
   for (const auto& p : points) {
     o << "\n[[calibration.points]]\n";
@@ -66,6 +70,40 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
     o << "semi_angle = " << quoted(format_number(in_degrees(p.semi_angle), 6) + " deg") << "\n";
     o << "mass_flow_rate = " << quoted(format_number(p.reference, 6) + " kg/s") << "\n";
     o << "error_bar = " << quoted(format_number(p.error_bar, 4) + " kg/s") << "\n";
+    o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
+    o << "source = " << quoted(p.source) << "\n";
+  }
+  return o.str();
+}
+
+std::string arching_calibration_toml(const ArchingCalibration& c,
+                                     const std::vector<ArchingPointRecord>& points) {
+  std::ostringstream o;
+  o << "# Written by `feedflow calibrate --arching`: the flow function's strength in the arching "
+       "models\n"
+       "# fitted to a full rung's critical outlet widths. The design check uses it for "
+    << c.geometry << " hoppers with\n# hopper.flow_factor=" << c.flow_factor << ".\n";
+  o << "[calibration.arching]\n";
+  o << "against = " << quoted(c.against) << "\n";
+  o << "rung = " << quoted(c.rung) << "\n";
+  o << "scene = " << quoted(c.scene) << "\n";
+  o << "geometry = " << quoted(c.geometry) << "\n";
+  o << "flow_factor = " << quoted(c.flow_factor) << "\n";
+  o << "commit = " << quoted(c.commit) << "\n";
+  o << "date = " << quoted(c.date) << "\n";
+  for (const auto& [row, model] : c.rows) {
+    o << "\n[calibration.arching.rows." << row << "]\n";
+    o << "coefficients = { strength_scale = " << number(model.coefficients.at("strength_scale"))
+      << " }\n";
+    write_figures(o, model.figures);
+  }
+  for (const auto& p : points) {
+    o << "\n[[calibration.arching.points]]\n";
+    o << "semi_angle = " << quoted(format_number(in_degrees(p.semi_angle), 6) + " deg") << "\n";
+    o << "wall_friction_angle = "
+      << quoted(format_number(in_degrees(p.wall_friction_angle), 6) + " deg") << "\n";
+    o << "arches_at = " << quoted(format_number(p.arches_at * 1e3, 6) + " mm") << "\n";
+    o << "flows_at = " << quoted(format_number(p.flows_at * 1e3, 6) + " mm") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
     o << "source = " << quoted(p.source) << "\n";
   }
@@ -89,15 +127,7 @@ std::string drum_calibration_toml(const DrumCalibration& c,
   o << "coefficients = { layer_fraction = " << number(c.layer.coefficients.at("layer_fraction"))
     << ", friction_shift = "
     << quoted(number(in_degrees(c.layer.coefficients.at("friction_shift"))) + " deg") << " }\n";
-  if (!c.layer.figures.empty()) {
-    o << "figures = {";
-    bool first = true;
-    for (const auto& [name, text] : c.layer.figures) {
-      o << (first ? " " : ", ") << name << " = " << quoted(text);
-      first = false;
-    }
-    o << " }\n";
-  }
+  write_figures(o, c.layer.figures);
   for (const auto& p : points) {
     o << "\n[[calibration.drum.points]]\n";
     o << "speed = " << quoted(format_number(in_rpm(p.speed), 6) + " rpm") << "\n";

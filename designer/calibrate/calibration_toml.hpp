@@ -29,6 +29,21 @@ struct DrumPointRecord {
   std::string source;
 };
 
+// One bracketed critical outlet width as [[calibration.arching.points]] records it.
+struct ArchingPointRecord {
+  double semi_angle = 0.0;           // [rad]
+  double wall_friction_angle = 0.0;  // [rad]
+  double arches_at = 0.0;            // [m] the widest outlet the rung saw arch
+  double flows_at = 0.0;             // [m] the narrowest outlet the rung saw flow
+  bool held_out = false;
+  std::string source;  // the verified record it came from
+};
+
+// "[calibration.arching]" with its rows ([calibration.arching.rows.<row>]) and
+// [[calibration.arching.points]].
+std::string arching_calibration_toml(const ArchingCalibration& c,
+                                     const std::vector<ArchingPointRecord>& points);
+
 // "[calibration.drum]" with its coefficients (the friction shift in degrees) and
 // [[calibration.drum.points]].
 std::string drum_calibration_toml(const DrumCalibration& c,

@@ -136,6 +136,8 @@ void design_figures(const std::vector<DischargeObservation>& obs, const HopperMa
 
 double relative_error(double a, double b) { return std::abs(a / b - 1.0); }
 
+std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
+
 FitErrors fit_errors(const std::vector<double>& values, const std::vector<double>& references,
                      const std::vector<bool>& held_out) {
   FitErrors e;

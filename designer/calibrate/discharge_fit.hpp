@@ -54,6 +54,8 @@ DischargeFit fit_discharge(const std::vector<DischargeObservation>& observations
 
 // |a / b - 1|.
 double relative_error(double a, double b);
+// A relative error as a figure: "4.1 %".
+std::string percent(double relative);
 
 // A model's errors against a fit's references: the rms relative error over the fitted points and
 // the largest over the held-out ones (0 without any).

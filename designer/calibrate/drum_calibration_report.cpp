@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <sstream>
 
+#include "designer/calibrate/discharge_fit.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
 
-std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
 std::string degrees(double radians, int digits = 4) {
   return format_number(in_degrees(radians), digits);
 }

@@ -14,8 +14,6 @@
 namespace feedflow {
 namespace {
 
-std::string percent(double relative) { return format_number(100.0 * relative, 3) + " %"; }
-
 // The material with (c_delta, shift) as its drum calibration, without figures (no widening).
 void set_trial(Material& m, double layer_fraction, double shift) {
   DrumCalibration& c = m.calibration->drum.emplace();

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "models/hopper/critical_outlet_models.hpp"
 #include "models/hopper/discharge_models.hpp"
+#include "models/hopper/flow_factor_models.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/dimension.hpp"
 #include "models/units/quantity_format.hpp"
@@ -10,8 +12,11 @@
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kKeys[] = {"against", "rung", "scene",     "geometry", "density_model",
-                                      "commit",  "date", "discharge", "points",   "drum"};
+constexpr std::string_view kKeys[] = {"against",       "rung",   "scene",  "geometry",
+                                      "density_model", "commit", "date",   "discharge",
+                                      "points",        "drum",   "arching"};
+constexpr std::string_view kArchingKeys[] = {"against", "rung", "scene", "geometry", "flow_factor",
+                                             "commit",  "date", "rows",  "points"};
 constexpr std::string_view kDrumKeys[] = {"against",      "rung",          "scene",  "end_walls",
                                           "diameter",     "fill_fraction", "commit", "date",
                                           "coefficients", "figures",       "points"};
@@ -142,6 +147,64 @@ DrumCalibration read_drum(const toml::table& t, const TableContext& ctx) {
   return d;
 }
 
+// [calibration.arching]: per hopper.critical_outlet row a strength scale in [0.01, 100], fitted
+// with a hopper.flow_factor row.
+ArchingCalibration read_arching(const toml::table& t, const TableContext& ctx) {
+  for (auto&& [k, node] : t) require_known_key(node, k.str(), kArchingKeys, ctx);
+  ArchingCalibration a;
+  a.against = required_choice(t, "against", "cel", "dem", ctx);
+  a.rung = required_text(t, "rung", ctx);
+  a.scene = required_text(t, "scene", ctx);
+  a.geometry = required_choice(t, "geometry", "wedge", "conical", ctx);
+  a.flow_factor = required_text(t, "flow_factor", ctx);
+  if (!flow_factor_models().find(a.flow_factor)) {
+    std::string rows;
+    for (const auto& r : flow_factor_models().rows) (rows += rows.empty() ? "" : ", ") += r.name;
+    throw InputError(location(*t.get("flow_factor"), ctx.file), ctx.dotted("flow_factor"),
+                     "expected a hopper.flow_factor row (" + rows + "), got \"" + a.flow_factor +
+                         "\"");
+  }
+  a.commit = required_text(t, "commit", ctx);
+  a.date = required_text(t, "date", ctx);
+  const toml::node* rows = t.get("rows");
+  if (!rows) missing_key(t, ctx.dotted("rows"), "a table of hopper.critical_outlet rows", ctx.file);
+  TableContext rctx = ctx;
+  rctx.prefix = ctx.dotted("rows");
+  std::vector<std::string_view> names;
+  for (const auto& r : critical_outlet_models().rows) names.push_back(r.name);
+  for (auto&& [k, node] : table_at(*rows, rctx.prefix, ctx)) {
+    require_known_key(node, k.str(), names, rctx);
+    TableContext mctx = rctx;
+    mctx.prefix = rctx.dotted(k.str());
+    const toml::table& row = table_at(node, mctx.prefix, ctx);
+    for (auto&& [key, value] : row) require_known_key(value, key.str(), kModelKeys, mctx);
+    const toml::node* c = row.get("coefficients");
+    if (!c) missing_key(row, mctx.dotted("coefficients"), "strength_scale", ctx.file);
+    TableContext cctx = mctx;
+    cctx.prefix = mctx.dotted("coefficients");
+    const toml::table& coefficients = table_at(*c, cctx.prefix, ctx);
+    constexpr std::string_view kScale[] = {"strength_scale"};
+    for (auto&& [key, value] : coefficients) require_known_key(value, key.str(), kScale, cctx);
+    const toml::node* scale = coefficients.get("strength_scale");
+    if (!scale)
+      missing_key(coefficients, cctx.dotted("strength_scale"), "the factor on sigma_c", ctx.file);
+    const auto x = scale->value<double>();
+    if (!x || !(*x >= 0.01 && *x <= 100.0))
+      throw InputError(
+          location(*scale, ctx.file), cctx.dotted("strength_scale"),
+          "expected a number in [0.01, 100] (the factor on the flow function's sigma_c)");
+    CalibratedModel m;
+    m.coefficients["strength_scale"] = *x;
+    m.figures = read_figures(row, mctx);
+    a.rows[std::string(k.str())] = std::move(m);
+  }
+  if (a.rows.empty())
+    throw InputError(location(*rows, ctx.file), ctx.dotted("rows"),
+                     "expected at least one hopper.critical_outlet row");
+  a.points = point_count(t, ctx);
+  return a;
+}
+
 }  // namespace
 
 Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
@@ -151,8 +214,13 @@ Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
     TableContext dctx = ctx;
     dctx.prefix = ctx.dotted("drum");
     c.drum = read_drum(table_at(*d, dctx.prefix, ctx), dctx);
-    if (t.size() == 1) return c;  // a drum calibration alone: no hopper part
   }
+  if (const toml::node* a = t.get("arching")) {
+    TableContext actx = ctx;
+    actx.prefix = ctx.dotted("arching");
+    c.arching = read_arching(table_at(*a, actx.prefix, ctx), actx);
+  }
+  if (t.size() == (c.drum ? 1u : 0u) + (c.arching ? 1u : 0u)) return c;  // no discharge part
   c.against = required_choice(t, "against", "cel", "dem", ctx);
   c.rung = required_text(t, "rung", ctx);
   c.scene = required_text(t, "scene", ctx);

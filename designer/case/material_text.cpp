@@ -30,8 +30,11 @@ bool names(std::string_view name, std::string_view table) {
 bool calibration_header(std::string_view line, CalibrationPart part) {
   const std::string_view name = header_name(line);
   if (!names(name, "calibration")) return false;
-  const bool drum = names(name, "calibration.drum");
-  return part == CalibrationPart::all || (part == CalibrationPart::drum) == drum;
+  if (part == CalibrationPart::all) return true;
+  const CalibrationPart own = names(name, "calibration.drum")      ? CalibrationPart::drum
+                              : names(name, "calibration.arching") ? CalibrationPart::arching
+                                                                   : CalibrationPart::hopper;
+  return own == part;
 }
 
 bool any_header(std::string_view line) {

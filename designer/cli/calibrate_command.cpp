@@ -11,6 +11,7 @@
 
 #include "designer/bench/bench_run.hpp"
 #include "designer/bench/bench_table.hpp"
+#include "designer/calibrate/arching_report.hpp"
 #include "designer/calibrate/calibration_design.hpp"
 #include "designer/calibrate/calibration_report.hpp"
 #include "designer/calibrate/drum_calibration_report.hpp"
@@ -51,6 +52,9 @@ struct CalibrateArguments {
   std::vector<double> cells_across = {3.0, 6.0};
   std::optional<double> order;
   std::string time = "1s";  // after the opening, as the bench measured the hopper's rate
+  // Verified design records (results.json) whose critical outlet widths an arching calibration
+  // fits.
+  std::vector<std::string> arching;
   std::string write;
   bool list = false;
   CommandOptions options;
@@ -373,10 +377,74 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
   return kExitOk;
 }
 
-// A hopper case calibrates the discharge, a drum case the flowing layer.
+// The arching models' strength fitted to the critical outlet widths of verified design records:
+// no runs are made here (each bracket is a bisection of its own, made and kept by `design
+// --verify dem --width-tolerance`).
+int run_arching_calibration(const CalibrateArguments& args, const Case& hopper_case,
+                            std::chrono::steady_clock::time_point start) {
+  const Material material =
+      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
+          .load(args.material);
+  if (hopper_case.material.name != material.name)
+    throw InputError("--case", args.case_file,
+                     "a hopper case of " + material.name + " (its material is " +
+                         hopper_case.material.name + ")");
+  const std::vector<double> held_out = args.held_out.empty() || args.held_out == "none"
+                                           ? std::vector<double>{}
+                                           : quantity_list(args.held_out, dim::angle, "--held-out");
+  ArchingCalibrationOutcome o;
+  o.material = material.name;
+  o.against = args.against;
+  o.scene = hopper_case.name;
+  o.flow_factor = std::string(flow_factor_models().default_row().name);
+  std::set<std::string> commits;
+  for (const auto& file : args.arching) {
+    ArchingRecord r = read_arching_record(file, args.against, material.name,
+                                          std::get<Hopper>(hopper_case.equipment));
+    for (double angle : held_out)
+      if (std::abs(angle - r.observation.hopper.semi_angle) < 1e-6) r.observation.held_out = true;
+    if (!o.records.empty() && r.rung != o.records.front().rung)
+      throw InputError(file, "results.critical_outlet_width.model",
+                       "expected the rung of the other records (" + o.records.front().rung +
+                           "), got " + r.rung);
+    commits.insert(r.commits.begin(), r.commits.end());
+    o.records.push_back(std::move(r));
+  }
+  std::vector<ArchingObservation> observations;
+  for (const auto& r : o.records) observations.push_back(r.observation);
+  try {
+    o.fit = fit_arching(observations, HopperMaterial::of(hopper_case.material));
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--arching", args.arching.front(), e.what());
+  }
+  if (args.list) {
+    for (const auto& r : o.records) std::cout << r.file.string() << ": " << r.bracket << '\n';
+    return kExitOk;
+  }
+  const std::filesystem::path out = output_folder(args, material);
+  OutputFolder folder(out, "--out");
+  const ArchingCalibration table =
+      arching_calibration_table(o, commit_text(kCommit, commits), today());
+  const auto target = material_target(args, material, out);
+  write_calibration(args, arching_calibration_json(o, table), out, target,
+                    with_calibration(material_text(material),
+                                     arching_calibration_toml(table, arching_point_records(o)),
+                                     CalibrationPart::arching),
+                    folder, arching_calibration_summary(o, table), start);
+  return kExitOk;
+}
+
+// A hopper case calibrates the discharge (or, with --arching, the arching models), a drum case
+// the flowing layer.
 int run_calibrate(const CalibrateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
   const Case c = load_case(args.case_file, {});
+  if (!args.arching.empty()) {
+    if (!std::holds_alternative<Hopper>(c.equipment))
+      throw InputError("--case", args.case_file,
+                       "a hopper case (--arching fits the hopper's arching models)");
+    return run_arching_calibration(args, c, start);
+  }
   if (std::holds_alternative<Drum>(c.equipment)) return run_drum_calibration(args, c, start);
   if (!std::holds_alternative<Hopper>(c.equipment))
     throw InputError("--case", args.case_file,
@@ -412,7 +480,8 @@ void add_calibrate_command(Command& program, int& exit_code) {
       .option("--held-out", args->held_out,
               std::string(
                   "points left out of the fit to test it: a hopper's WIDTH@ANGLE,... (default ") +
-                  kHopperHeldOut + "), a drum's speeds (default " + kDrumHeldOut + "); none")
+                  kHopperHeldOut + "), a drum's speeds (default " + kDrumHeldOut +
+                  "), --arching's semi-angles (default none); none")
       .type_name("LIST");
   command.option("--speeds", args->speeds, "a drum's fitted speeds, where it rolls")
       .show_default()
@@ -441,6 +510,14 @@ void add_calibrate_command(Command& program, int& exit_code) {
               "material file to write (default: the material's own file; a built-in material: "
               "OUT/<name>.toml)")
       .type_name("FILE");
+  command
+      .option("--arching", args->arching,
+              "fit the arching models' strength (sigma_c scale) to the critical outlet widths of "
+              "these verified "
+              "designs (results.json of `design --verify dem --width-tolerance ...`) instead of "
+              "the discharge; "
+              "--held-out then takes semi-angles")
+      .type_name("RESULTS...");
   command.flag("--list", args->list, "list the runs the calibration makes, then stop");
   command
       .option("--out", args->options.out,

@@ -43,6 +43,32 @@ std::vector<std::string> hopper_assumptions(const Case& c, const Hopper& h, cons
                 ". Jenike's method is known to overpredict B_c (errs wide, the safe side); the static-arch "
                 "estimate H_a is derived, not a published formula, and falls on steep smooth walls.");
   out.push_back("Bulk density: " + a.material.density_model + ".");
+  if (const auto& arching =
+          c.material.calibration ? c.material.calibration->arching : std::nullopt) {
+    bool calibrated = false;
+    arching_strength_scale(a.material, flow_geometry(h), a.models.flow_factor->name,
+                           a.models.critical_outlet->name, &calibrated);
+    const auto row = arching->rows.find(std::string(a.models.critical_outlet->name));
+    if (calibrated) {
+      std::string figures;
+      for (const auto& [key, words] : {std::pair{"scale_range", "range every bracket allows "},
+                                       std::pair{"fit_rms_error", "rms error "},
+                                       std::pair{"held_out_max_error", "held-out max error "}})
+        if (row->second.figures.count(key))
+          figures += std::string("; ") + words + row->second.figures.at(key);
+      out.push_back("Arching: the flow function's sigma_c in " +
+                    std::string(a.models.critical_outlet->name) +
+                    " is scaled by the material's [calibration.arching], fitted to " +
+                    arching->rung + " over " + std::to_string(arching->points) +
+                    " bracketed critical outlet width(s), commit " + arching->commit + figures +
+                    "; valid near the fitted semi-angles and wall friction.");
+    } else {
+      out.push_back("The material's [calibration.arching] is for " + arching->geometry +
+                    " hoppers with hopper.flow_factor=" + arching->flow_factor +
+                    (row == arching->rows.end() ? " and other hopper.critical_outlet rows" : "") +
+                    ": this check uses the flow function as measured.");
+    }
+  }
   if (h.is_wedge())
     out.push_back("Wedge: plane flow assumes a slot at least 3 outlet widths long; the mass-flow limit uses the "
                   "interim rule 'conical limit + 8-12 deg' (no verified closed form for plane flow).");

@@ -88,7 +88,29 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
       hm.discharge_calibration = std::move(dc);
     }
   }
+  if (m.calibration && m.calibration->arching) {
+    const ArchingCalibration& a = *m.calibration->arching;
+    ArchingScale scale;
+    scale.geometry = a.geometry == "conical" ? FlowGeometry::conical : FlowGeometry::plane;
+    scale.flow_factor = a.flow_factor;
+    for (const auto& [row, fitted] : a.rows)
+      scale.strength_scale[row] = fitted.coefficients.at("strength_scale");
+    scale.source = "calibrated against " + a.rung.substr(0, a.rung.find(',')) + " (" + a.scene +
+                   ", " + a.date + ")";
+    hm.arching_calibration = std::move(scale);
+  }
   return hm;
+}
+
+double arching_strength_scale(const HopperMaterial& m, FlowGeometry g, std::string_view flow_factor,
+                              std::string_view critical_outlet, bool* calibrated) {
+  if (calibrated) *calibrated = false;
+  const auto& a = m.arching_calibration;
+  if (!a || a->geometry != g || a->flow_factor != flow_factor) return 1.0;
+  const auto it = a->strength_scale.find(critical_outlet);
+  if (it == a->strength_scale.end()) return 1.0;
+  if (calibrated) *calibrated = true;
+  return it->second;
 }
 
 std::vector<MaterialVariant> material_variants(const HopperMaterial& m, double phi_w, bool corners_only) {

@@ -3,7 +3,8 @@
 // to a full rung over a design of experiments, with what they were fitted to (rung, scene,
 // commit, date) and how well (residuals before and after, on the fitted and the held-out points).
 // The design check uses them for hoppers of the calibrated geometry and says so. A drum
-// calibration ([calibration.drum]) has its own provenance: it is made and written apart.
+// calibration ([calibration.drum]) and an arching one ([calibration.arching]) have their own
+// provenance: each is made and written apart.
 #include <map>
 #include <optional>
 #include <string>
@@ -35,6 +36,21 @@ struct DrumCalibration {
   std::size_t points = 0;  // design points (fitted and held out)
 };
 
+// The flow function's strength in the arching models fitted to a rung's critical outlet widths
+// (each a bracket from a bisection on the outlet, `design --verify dem --width-tolerance`):
+// coefficient "strength_scale" per hopper.critical_outlet row, multiplying sigma_c in that row's
+// B_c, evaluated with the flow-factor row `flow_factor`.
+struct ArchingCalibration {
+  std::string against;       // "dem" (a rung that arches)
+  std::string rung;          // what the references were, in words (the law and its cohesion)
+  std::string scene;         // the hopper case the bisections ran on
+  std::string geometry;      // "wedge" | "conical"
+  std::string flow_factor;   // the hopper.flow_factor row the fit evaluated B_c with
+  std::string commit, date;  // of the program that made the references
+  std::map<std::string, CalibratedModel> rows;  // by hopper.critical_outlet row name
+  std::size_t points = 0;                       // semi-angles bracketed (fitted and held out)
+};
+
 struct Calibration {
   std::string against;        // "cel" | "dem"
   std::string rung;           // what the references were, in words
@@ -45,6 +61,7 @@ struct Calibration {
   std::map<std::string, CalibratedModel> discharge;  // by hopper.discharge row name
   std::size_t points = 0;     // design points (fitted and held out)
   std::optional<DrumCalibration> drum;  // [calibration.drum]
+  std::optional<ArchingCalibration> arching;  // [calibration.arching]
 };
 
 }  // namespace feedflow

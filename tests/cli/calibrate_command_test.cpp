@@ -170,6 +170,52 @@ TEST(CalibrateCommand, ADrumSpeedWhereItDoesNotRollIsRefused) {
   fs::remove_all(dir);
 }
 
+// The pilot hopper's DEM bracket at 30 deg (tests/data/verified_bc: arches at 31.33 mm, flows at
+// 42.18 mm) calibrates the arching models: the material file gains [calibration.arching] beside
+// its discharge part, and `design` at 30 deg then puts B_c inside the bracket (the published
+// strength put it 2.4 % below) and says which calibration it used. A record asked of the other
+// rung, with a case of another shape, or a file that is no record is exit 2 with nothing written.
+TEST(CalibrateCommand, AVerifiedCriticalWidthCalibratesTheArchingModels) {
+  const fs::path dir = scratch_folder("feedflow_calibrate", true);
+  const std::string record =
+      (fs::path(FEEDFLOW_TEST_DATA_DIR) / "verified_bc" / "pilot_hopper_30deg_k_nc.json").string();
+  const feedflow::testing::Run r =
+      run_feedflow("calibrate loblolly_pine --against dem --arching " + record + " --out c", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("envelope: sigma_c x 1.163"), std::string::npos) << r.out;
+  const std::string material = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  EXPECT_NE(material.find("[calibration.arching]"), std::string::npos);
+  EXPECT_NE(material.find("[calibration.discharge."), std::string::npos)
+      << "the discharge part was dropped";
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  const auto& envelope = json["models"][0];
+  EXPECT_GT(envelope["strength_scale"].get<double>(), envelope["scale_low"].get<double>());
+  EXPECT_LT(envelope["strength_scale"].get<double>(), envelope["scale_high"].get<double>());
+
+  const feedflow::testing::Run design =
+      run_feedflow("design cases/pilot_hopper.toml --set hopper.outlet_width=45mm --json -", dir);
+  ASSERT_EQ(design.exit_code, 0) << design.err;
+  const auto d = nlohmann::json::parse(design.out);
+  const double width = d["results"]["critical_outlet_width"]["value"].get<double>();
+  EXPECT_GT(width, 0.031326);
+  EXPECT_LT(width, 0.042176);
+  EXPECT_NE(d["results"]["critical_outlet_width"]["model"].get<std::string>().find(
+                "calibrated against L3 DEM"),
+            std::string::npos);
+
+  const std::string bad[] = {"--against cel --arching " + record,
+                             "--against dem --arching " + record +
+                                 " --case cases/conical_hopper.toml",
+                             "--against dem --arching cases/pilot_hopper.toml"};
+  for (const auto& args : bad) {
+    const feedflow::testing::Run refused =
+        run_feedflow("calibrate loblolly_pine " + args + " --out refused", dir);
+    EXPECT_EQ(refused.exit_code, 2) << args << ": " << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "refused")) << args;
+  }
+  fs::remove_all(dir);
+}
+
 // Bad input is exit 2 naming the flag, before any run: a list without a unit, too coarse a CEL
 // level, levels that do not double, a held-out point without '@', one fitted point.
 TEST(CalibrateCommand, BadInputIsRefusedByFlag) {
