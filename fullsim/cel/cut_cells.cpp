@@ -12,7 +12,7 @@ namespace {
 
 struct Vertex {
   Eigen::Vector2d x;
-  double d;  // signed distance, positive on the material side
+  double d;  // signed distance, positive on the material side (open), 0 on the wall
 };
 
 // int w dA over the triangle's part where the linear interpolant of d is positive: w = 1 (plane
@@ -24,8 +24,8 @@ double open_part_of_triangle(const std::array<Vertex, 3>& t, bool r_weighted) {
   for (int k = 0; k < 3; ++k) {
     const Vertex& a = t[k];
     const Vertex& b = t[(k + 1) % 3];
-    if (a.d >= 0.0) p[n++] = a.x;
-    if ((a.d >= 0.0) != (b.d >= 0.0)) p[n++] = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
+    if (a.d > 0.0) p[n++] = a.x;
+    if ((a.d > 0.0) != (b.d > 0.0)) p[n++] = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
   }
   double area2 = 0.0, moment6 = 0.0;
   for (int k = 0; k < n; ++k) {
@@ -40,10 +40,10 @@ double open_part_of_triangle(const std::array<Vertex, 3>& t, bool r_weighted) {
 
 // int w ds over the open part of the segment a-b (d linear along it), w as above.
 double open_part_of_segment(const Vertex& a, const Vertex& b, bool r_weighted) {
-  if (a.d < 0.0 && b.d < 0.0) return 0.0;
+  if (a.d <= 0.0 && b.d <= 0.0) return 0.0;
   Eigen::Vector2d p = a.x, q = b.x;
-  if (a.d < 0.0) p = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
-  if (b.d < 0.0) q = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
+  if (a.d <= 0.0) p = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
+  if (b.d <= 0.0) q = a.x + (a.d / (a.d - b.d)) * (b.x - a.x);
   const double length = (q - p).norm();
   return r_weighted ? length * 0.5 * (p.x() + q.x()) : length;
 }
@@ -63,7 +63,15 @@ CutCellGeometry cut_cell_geometry(const CelGrid& g, const std::vector<PlacedWall
   const double h = g.cell_size;
   const int s = subdivisions;
   const bool axi = g.axisymmetric();
-  const auto distance = [&](const Eigen::Vector2d& x) { return distance_to_walls(walls, x); };
+  // A point is open when it lies on the material side by more than 1e-9 h (closer, it is on the
+  // wall: distance 0, closed): a wall along a grid line (a bin wall through the faces of a
+  // column) closes the face on it and the cells beyond, where round-off in the distance would
+  // leave them slivers of 1e-17 of a cell, open to flux through a face of full aperture.
+  const double on_the_wall = 1e-9 * g.cell_size;
+  const auto distance = [&](const Eigen::Vector2d& x) {
+    const double d = distance_to_walls(walls, x);
+    return d > on_the_wall ? d : std::min(d, 0.0);
+  };
   // Beyond these distances of the centre a cell (face) is wholly on one side.
   const double cell_reach = 0.5 * std::sqrt(2.0) * h * (1.0 + 1e-9);
   const double face_reach = 0.5 * h * (1.0 + 1e-9);

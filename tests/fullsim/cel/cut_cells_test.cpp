@@ -74,6 +74,28 @@ TEST(CelCutCells, ConeWallGivesTheFrustumVolumePerRadian) {
   EXPECT_NEAR(open_volume(g, cut_cell_geometry(g, walls, 4)), exact, 1e-15);
 }
 
+// The pilot cone's bin wall r = 0.15 m on 1.25 mm cells runs along the faces between columns
+// 119 and 120: column 119 is whole, the face on the wall and every cell beyond it are closed.
+// Before the 1e-9 h rule the round-off of the distance left the cells beyond open by 1e-17 behind
+// a face of full aperture; dust flowed into them and one was crushed (the 1.25 mm cone run
+// stopped at 0.71 s with a collapsed step).
+TEST(CelCutCells, AWallAlongAGridLineClosesTheFaceOnItAndTheCellsBeyond) {
+  const double h = 0.00125;
+  const CelGrid g = make_axisymmetric_grid(122, 8, h, {0.0, 0.2});
+  RigidWall w;  // material at r < 0.15 m (travelling upwards keeps it on the left)
+  w.points = {{0.15, 0.0}, {0.15, 0.5}};
+  const std::vector<RigidWall> wall_set{w};
+  const auto walls = place_walls(wall_set, 0.0);
+  const CutCellGeometry geo = cut_cell_geometry(g, walls);
+  for (int j = 0; j < g.ny; ++j) {
+    EXPECT_NEAR(geo.open[119 + static_cast<std::size_t>(g.nx) * j], 1.0, 1e-12) << j;
+    for (int i = 120; i < g.nx; ++i)
+      EXPECT_EQ(geo.open[i + static_cast<std::size_t>(g.nx) * j], 0.0) << i << ", " << j;
+    EXPECT_EQ(geo.aperture(0, 119, j), 1.0) << j;
+    EXPECT_EQ(geo.aperture(0, 120, j), 0.0) << j;
+  }
+}
+
 // A wedge's kink (vertical bin wall over a 30 deg wall): the piecewise-linear sampling errs only
 // in the kink's cell, by less than a sub-square, and the open fractions stay within [0, 1].
 TEST(CelCutCells, KinkedWallConvergesUnderSubdivision) {
