@@ -513,10 +513,8 @@ void add_calibrate_command(Command& program, int& exit_code) {
   command
       .option("--arching", args->arching,
               "fit the arching models' strength (sigma_c scale) to the critical outlet widths of "
-              "these verified "
-              "designs (results.json of `design --verify dem --width-tolerance ...`) instead of "
-              "the discharge; "
-              "--held-out then takes semi-angles")
+              "these verified designs (results.json of `design --verify dem --width-tolerance "
+              "...`) instead of the discharge; --held-out then takes semi-angles")
       .type_name("RESULTS...");
   command.flag("--list", args->list, "list the runs the calibration makes, then stop");
   command
