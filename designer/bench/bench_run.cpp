@@ -201,6 +201,23 @@ std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folde
   }
 }
 
+void adopt_checkpoint_of_killed_run(const std::filesystem::path& folder,
+                                    const std::string& invocation, const std::string& inputs) {
+  const std::filesystem::path written = scene_checkpoint_path(folder);
+  if (!std::filesystem::exists(written)) return;
+  std::ifstream in(folder / "run.json");
+  if (!in) return;
+  try {
+    const BenchRun run = bench_run_from_json(nlohmann::ordered_json::parse(in));
+    if (run.status != "interrupted" || run.invocation != invocation || run.inputs != inputs ||
+        inputs.empty())
+      return;
+  } catch (const std::exception&) {  // damaged: the run starts again
+    return;
+  }
+  std::filesystem::rename(written, interrupted_checkpoint(folder));
+}
+
 BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& source_root,
                           const std::filesystem::path& folder, bool& made) {
   if (auto saved = saved_run_of(q, p, source_root, folder)) {
@@ -208,13 +225,23 @@ BenchRun run_or_read_back(const BenchQuestion& q, const BenchPoint& p, const std
     return std::move(*saved);
   }
   made = true;
-  const auto before = interrupted_bench_run(folder, bench_invocation(q, p),
-                                            bench_inputs_fingerprint(q, p, source_root));
+  const std::string invocation = bench_invocation(q, p),
+                    inputs = bench_inputs_fingerprint(q, p, source_root);
   const std::filesystem::path kept = interrupted_checkpoint(folder),
                               written = scene_checkpoint_path(folder);
+  adopt_checkpoint_of_killed_run(folder, invocation, inputs);
+  const auto before = interrupted_bench_run(folder, invocation, inputs);
   if (!before) {  // a checkpoint left by another run must not pass for this one's
     std::filesystem::remove(kept);
     std::filesystem::remove(written);
+  }
+  if (p.solver) {  // marked cut short until it ends: a run killed outright is known as this one
+    BenchRun marker = before.value_or(BenchRun{});
+    marker.invocation = invocation;
+    marker.inputs = inputs;
+    marker.status = "interrupted";
+    if (marker.commit.empty()) marker.commit = kCommit;
+    save_bench_run(folder, marker);
   }
   BenchRun run =
       run_bench_point(q, p, source_root, folder, before ? kept : std::filesystem::path());

@@ -74,6 +74,11 @@ std::optional<BenchRun> saved_run_of(const BenchQuestion& question, const BenchP
 std::optional<BenchRun> interrupted_bench_run(const std::filesystem::path& folder,
                                               const std::string& invocation,
                                               const std::string& inputs);
+// A simulation of this invocation and inputs killed outright (no Ctrl-C: its run.json still
+// marks it cut short, and the checkpoint it wrote on the way is the scene's): that checkpoint
+// becomes the one the next call continues from.
+void adopt_checkpoint_of_killed_run(const std::filesystem::path& folder,
+                                    const std::string& invocation, const std::string& inputs);
 // Where a run cut short keeps its checkpoint in its folder.
 std::filesystem::path interrupted_checkpoint(const std::filesystem::path& folder);
 // What a command cut short tells its user: its runs are kept in `runs` and the same command

@@ -38,6 +38,7 @@ struct SimulateArguments {
   std::string solver;   // empty: chosen by the seed's rule
   std::string time;     // "2 s"; empty: the scene's own end
   std::string restart;  // checkpoint file
+  std::string checkpoint_every = "30 min";  // wall time between checkpoints on the way; 0: none
   bool report = false;
 };
 
@@ -59,6 +60,15 @@ int run_simulate(const SimulateArguments& args) {
     }
     if (!(*end_time > 0.0)) throw InputError("--time", "", "the simulated time must be > 0 s, e.g. 2 s");
   }
+  double checkpoint_every = 0.0;
+  try {
+    checkpoint_every = parse_quantity_as(args.checkpoint_every, dim::time, false);
+  } catch (const UnitError& e) {
+    throw InputError("--checkpoint-every", "", e.what());
+  }
+  if (!(checkpoint_every >= 0.0))
+    throw InputError("--checkpoint-every", "",
+                     "expected a wall time >= 0 s, e.g. 30 min (0 s: no checkpoint on the way)");
   if (!args.restart.empty() && !std::filesystem::is_regular_file(args.restart))
     throw InputError("--restart", "", "no such checkpoint file: " + args.restart);
 
@@ -79,6 +89,7 @@ int run_simulate(const SimulateArguments& args) {
   // A run writes its snapshots and checkpoint as it goes: it needs a folder even with --json -.
   request.out = *output_folder(args.options, c.name, std::string("_") + to_string(choice.solver), true);
   request.restart = args.restart;
+  request.checkpoint_every = checkpoint_every;
   request.progress = team.root() && !args.options.quiet && isatty(STDERR_FILENO);
   request.log = team.root() && args.options.human_output() ? &std::cout : nullptr;
   if (request.log) std::cout << std::unitbuf;  // a run logged to a file shows its phases as they come
@@ -168,6 +179,14 @@ void add_simulate_command(Command& program, int& exit_code) {
       .type_name("TIME");
   command.option("--restart", args->restart, "continue the run saved in this checkpoint")
       .type_name("FILE");
+  command
+      .option(
+          "--checkpoint-every", args->checkpoint_every,
+          "wall time between the checkpoints a run writes on the way (OUT/checkpoint.h5; after "
+          "a DEM fill), so that a run killed outright continues with --restart; 0 s: only at the "
+          "end or on Ctrl-C")
+      .show_default()
+      .type_name("TIME");
   add_case_options(command, args->options, "out/<case name>_<solver>, e.g. out/pilot_hopper_cel");
   command.flag("--report", args->report,
                "also write report.pdf and report.html, with pictures of the simulation");

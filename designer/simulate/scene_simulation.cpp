@@ -84,6 +84,7 @@ SimulationOutcome simulate_scene(SceneAdapter& adapter, const SimulationRequest&
   run.out = request.out;
   run.log = request.log;
   run.progress = &progress;
+  run.checkpoint_every = request.checkpoint_every;
   if (restart) {
     run.restart = request.restart;
     restoring(request, [&] {

@@ -17,6 +17,9 @@ namespace feedflow {
 enum class Solver { dem, cel };
 const char* to_string(Solver solver);
 
+// A run killed outright loses at most this much wall time: 30 min.
+inline constexpr double kCheckpointEvery = 1800.0;
+
 struct SimulationRequest {
   Case case_data;
   Solver solver = Solver::dem;
@@ -28,6 +31,9 @@ struct SimulationRequest {
   // The processes a DEM run is shared among (each runs the same scene; the first writes the
   // files); one: alone. The CEL solver runs alone.
   DemRanks ranks = DemRanks::one();
+  // [s] of wall time between the checkpoints a run writes on the way (after a DEM scene's fill);
+  // <= 0: at the end or on Ctrl-C only.
+  double checkpoint_every = kCheckpointEvery;
 };
 
 enum class SimulationEnd { completed, interrupted };

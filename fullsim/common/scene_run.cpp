@@ -194,6 +194,9 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
     return end < kNever ? end : o.latest_origin + run_for;
   };
   const double planned = planned_end() - t_start;
+  auto last_checkpoint = Clock::now();
+  double periodic_seconds = 0.0;
+  long periodic_checkpoints = 0;
   progress.begin(o.label, planned, "s");
   while (true) {
     const double end = end_time();
@@ -214,6 +217,23 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
       snapshot_seconds += seconds_since(t);
     }
     take_due_samples();
+    // Every process agrees on the periodic checkpoint (their clocks differ); a failed write
+    // (a full disk) stops the run as the end's would.
+    const bool due =
+        o.checkpoint_every > 0.0 && seconds_since(last_checkpoint) >= o.checkpoint_every;
+    if (o.checkpoint_every > 0.0 && stepper.raised_on_any(due) && stepper.checkpoint_ready()) {
+      const auto t = Clock::now();
+      std::optional<std::string> failure;
+      try {
+        write_checkpoint(stepper, scene_checkpoint_path(o.out), r.series, o);
+      } catch (const std::runtime_error& e) {
+        failure = e.what();
+      }
+      if (auto agreed = stepper.agreed_failure(failure)) throw std::runtime_error(*agreed);
+      periodic_seconds += seconds_since(t);
+      ++periodic_checkpoints;
+      last_checkpoint = Clock::now();
+    }
     // Done in the terms of the first plan (a scene event moves the end).
     progress.update((stepper.time() - t_start) * planned / std::max(planned_end() - t_start, 1e-300));
   }
@@ -240,7 +260,11 @@ SceneRunResult run_scene(Stepper& stepper, const SceneRunOptions& o) {
   r.performance = stepper.performance();
   r.performance.add_phase_time("sampling", sample_seconds);
   r.performance.add_phase_time("snapshots", snapshot_seconds);
-  r.performance.add_phase_time("checkpoint", checkpoint_seconds);
+  r.performance.add_phase_time("checkpoint", checkpoint_seconds + periodic_seconds);
+  if (periodic_checkpoints > 0)
+    r.performance.add_figure("checkpoints on the way",
+                             std::to_string(periodic_checkpoints) + ", every " +
+                                 format_quantity(o.checkpoint_every, "s") + " of wall time");
   r.performance.set_wall_seconds(r.wall_seconds + o.setup_seconds);
   if (o.setup_seconds > 0.0)
     r.performance.add_figure(o.setup_name + " (before the run)",

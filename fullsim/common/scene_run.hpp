@@ -4,8 +4,9 @@
 // shell started: given, or the stepper's event_started_at() once its scene event has happened),
 // unless the stop predicate ends it first (the measured quantity has converged, the flow has
 // stopped). On the way: a sampled time series, field snapshots, progress with an ETA, the
-// interrupt flag (Ctrl-C), and at the end or on an interrupt a checkpoint whose /scene group
-// holds the series and the scene's own data, so a restarted run continues the same series.
+// interrupt flag (Ctrl-C), and at the end or on an interrupt (and every `checkpoint_every` of
+// wall time) a checkpoint whose /scene group holds the series and the scene's own data, so a
+// restarted run continues the same series.
 // The plan line, the end and the performance block go to the log sink; nothing is printed.
 //
 // Sample and snapshot times and the end are planned on the stepper's step grid
@@ -58,6 +59,10 @@ struct SceneRunOptions {
   // are in the engine's phases): the block's wall time covers it, and it is shown on its own.
   double setup_seconds = 0.0;
   std::string setup_name = "fill";
+  // [s] of wall time between checkpoints written on the way (the end's file, whole or not at
+  // all), so that a run killed outright (power, the OOM killer, a scheduler's hard limit)
+  // continues from the last one; <= 0: a checkpoint only at the end or on Ctrl-C.
+  double checkpoint_every = 0.0;
   long steps_between_checks = 200;      // steps between interrupt checks and progress updates
   std::ostream* log = nullptr;          // plan line, end, performance block; null: silent
   ProgressSink* progress = nullptr;     // null: none

@@ -86,8 +86,9 @@ TEST_F(FeedflowCli, BadCaseExitsTwoAndWritesNothing) {
   EXPECT_EQ(run_feedflow("", dir_).exit_code, 2);                  // no subcommand
 }
 
-// simulate refuses a bad solver name, a time without a time unit and a missing checkpoint
-// with exit code 2, naming the option, before anything runs or is written.
+// simulate refuses a bad solver name, a time without a time unit, a missing checkpoint and a
+// checkpoint interval that is no wall time with exit code 2, naming the option, before anything
+// runs or is written.
 TEST_F(FeedflowCli, SimulateBadOptionsExitTwo) {
   const struct {
     const char* cmd;
@@ -95,7 +96,9 @@ TEST_F(FeedflowCli, SimulateBadOptionsExitTwo) {
   } cases[] = {{"simulate cases/pilot_hopper.toml --solver fem", "--solver"},
                {"simulate cases/pilot_hopper.toml --time 3mm", "--time"},
                {"simulate cases/pilot_hopper.toml --time -1s", "--time"},
-               {"simulate cases/pilot_hopper.toml --restart nowhere.h5", "--restart"}};
+               {"simulate cases/pilot_hopper.toml --restart nowhere.h5", "--restart"},
+               {"simulate cases/pilot_hopper.toml --checkpoint-every 5mm", "--checkpoint-every"},
+               {"simulate cases/pilot_hopper.toml --checkpoint-every -1min", "--checkpoint-every"}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.cmd);
     const auto r = run_feedflow(std::string(c.cmd) + " --out sim_out", dir_);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "designer/bench/bench_table.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_text.hpp"
+#include "fullsim/common/scene_run.hpp"
 #include "models/numerics/richardson.hpp"
 #include "models/os/interrupt_request.hpp"
 
@@ -406,6 +408,70 @@ TEST(BenchRunFile, ACutRunContinuesFromItsCheckpoint) {
     ++continued;
   }
   EXPECT_GE(continued, 1);
+  std::filesystem::remove_all(dir);
+}
+
+// A run killed outright (no Ctrl-C) leaves its run.json marked cut short from its start, and the
+// checkpoint it wrote on the way as the scene's checkpoint.h5: the next call takes that
+// checkpoint and ends with the uninterrupted run's answer. (The kill is staged: a Ctrl-C's
+// checkpoint put back where a checkpoint on the way lies.)
+TEST(BenchRunFile, ARunKilledOutrightContinuesFromItsCheckpointOnTheWay) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("feedflow_bench_killed_" + std::to_string(::getpid()));
+  const std::filesystem::path root = FEEDFLOW_SOURCE_DIR;
+  BenchQuestion q{
+      "rate", "rate", "cases/pilot_hopper.toml", {"hopper.outlet_width=120mm"}, false, {}, {}, {}};
+  BenchPoint cel = point("CEL cells 20mm", "L2");
+  cel.solver = Solver::cel;
+  cel.sets = {"cel.cell_size=20mm"};
+  cel.time = 0.3;
+  bool made = false;
+  // The first status run.json shows while the straight run goes is "interrupted".
+  std::string first_seen;
+  std::atomic<bool> finished{false};
+  std::thread watch([&] {
+    while (!finished && first_seen.empty()) {
+      std::ifstream in(dir / "straight" / "run.json");
+      if (in) first_seen = nlohmann::json::parse(in, nullptr, false).value("status", "");
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+  });
+  const auto t0 = std::chrono::steady_clock::now();
+  const BenchRun straight = run_or_read_back(q, cel, root, dir / "straight", made);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  finished = true;
+  watch.join();
+  ASSERT_TRUE(straight.done()) << straight.status;
+  EXPECT_EQ(first_seen, "interrupted");
+  int continued = 0;
+  for (double fraction : {0.5, 0.25, 0.75}) {
+    if (continued > 0) break;
+    const auto cut = dir / ("cut" + std::to_string(fraction));
+    std::thread ctrl_c([&] {
+      std::this_thread::sleep_for(std::chrono::duration<double>(fraction * wall));
+      request_interrupt();
+    });
+    const BenchRun first = run_or_read_back(q, cel, root, cut, made);
+    ctrl_c.join();
+    clear_interrupt_request();
+    if (first.status != "interrupted") continue;
+    std::filesystem::rename(interrupted_checkpoint(cut),
+                            scene_checkpoint_path(cut));  // as a kill leaves it
+    const BenchRun second = run_or_read_back(q, cel, root, cut, made);
+    ASSERT_TRUE(second.done()) << second.status;
+    std::ifstream log(cut / "run.log");
+    const std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    EXPECT_NE(said.find("restarted from " + interrupted_checkpoint(cut).string()),
+              std::string::npos)
+        << said;
+    EXPECT_EQ(physics_of(second), physics_of(straight));
+    ++continued;
+  }
+  EXPECT_GE(continued, 1);
+  // The checkpoint beside a finished run is not adopted.
+  adopt_checkpoint_of_killed_run(dir / "straight", bench_invocation(q, cel),
+                                 bench_inputs_fingerprint(q, cel, root));
+  EXPECT_FALSE(std::filesystem::exists(interrupted_checkpoint(dir / "straight")));
   std::filesystem::remove_all(dir);
 }
 

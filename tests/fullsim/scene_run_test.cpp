@@ -309,5 +309,34 @@ TEST(SceneRun, RestartedCelRunContinuesTheSameSeries) {
   for (const auto& d : {whole, first, second}) fs::remove_all(d);
 }
 
+// A DEM run that checkpoints on the way and dies (an exception out of the loop, where a kill
+// would leave nothing else) continues from its last checkpoint on the way to the same series, to
+// the last bit, as the uninterrupted run.
+TEST(SceneRun, ARunKilledOutrightContinuesFromItsLastCheckpointOnTheWay) {
+  const fs::path whole = scratch("killed_whole"), first = scratch("killed_first"),
+                 second = scratch("killed_second");
+  DemEngine a = settling_block();
+  const SceneRunResult straight = run_scene(a, block_options(a, whole, 0.03));
+  DemEngine b = settling_block();
+  SceneRunOptions dying = block_options(b, first, 0.03);
+  dying.checkpoint_every = 1e-12;  // after every pass of the loop
+  dying.stop = [](const TimeSeries& s) -> std::string {
+    if (s.rows().size() == 17) throw std::runtime_error("killed");
+    return "";
+  };
+  EXPECT_THROW(run_scene(b, dying), std::runtime_error);
+  ASSERT_TRUE(fs::exists(scene_checkpoint_path(first)));
+  DemEngine c = settling_block();
+  SceneRunOptions o = block_options(c, second, 0.03);
+  o.restart = scene_checkpoint_path(first);
+  o.previous = restore_scene_run(c, Hdf5File(o.restart, Hdf5File::Mode::read), o.columns);
+  EXPECT_GT(o.previous.rows().size(), 10u);  // it continues, not starts again
+  EXPECT_LT(o.previous.rows().size(), 17u);
+  const SceneRunResult resumed = run_scene(c, o);
+  EXPECT_EQ(resumed.series.rows(), straight.series.rows());
+  EXPECT_EQ(c.steps(), a.steps());
+  for (const auto& d : {whole, first, second}) fs::remove_all(d);
+}
+
 }  // namespace
 }  // namespace feedflow
