@@ -360,6 +360,32 @@ nlohmann::ordered_json physics_of(const BenchRun& run) {
   return j;
 }
 
+// The pilot hopper's rate at 120 mm on 20 mm CEL cells for 0.3 s: a bench point of seconds.
+BenchQuestion wide_outlet_rate() {
+  return {"rate", "rate", "cases/pilot_hopper.toml", {"hopper.outlet_width=120mm"}, false, {}, {}, {}};
+}
+BenchPoint coarse_cel_point() {
+  BenchPoint cel = point("CEL cells 20mm", "L2");
+  cel.solver = Solver::cel;
+  cel.sets = {"cel.cell_size=20mm"};
+  cel.time = 0.3;
+  return cel;
+}
+
+// The point run in `folder` with Ctrl-C after `seconds` of wall time.
+BenchRun run_cut_by_ctrl_c(const BenchQuestion& q, const BenchPoint& p, const std::filesystem::path& root,
+                           const std::filesystem::path& folder, double seconds) {
+  std::thread ctrl_c([&] {
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    request_interrupt();
+  });
+  bool made = false;
+  const BenchRun run = run_or_read_back(q, p, root, folder, made);
+  ctrl_c.join();
+  clear_interrupt_request();
+  return run;
+}
+
 // A simulation cut short (Ctrl-C part way) keeps its checkpoint, and the same point run again
 // continues from it to the answer of a run never cut, with the two parts' wall times added;
 // the answer is then read back, and the checkpoint of the cut is gone.
@@ -367,12 +393,8 @@ TEST(BenchRunFile, ACutRunContinuesFromItsCheckpoint) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("feedflow_bench_cut_" + std::to_string(::getpid()));
   const std::filesystem::path root = FEEDFLOW_SOURCE_DIR;
-  BenchQuestion q{
-      "rate", "rate", "cases/pilot_hopper.toml", {"hopper.outlet_width=120mm"}, false, {}, {}, {}};
-  BenchPoint cel = point("CEL cells 20mm", "L2");
-  cel.solver = Solver::cel;
-  cel.sets = {"cel.cell_size=20mm"};
-  cel.time = 0.3;
+  const BenchQuestion q = wide_outlet_rate();
+  const BenchPoint cel = coarse_cel_point();
   bool made = false;
   const auto t0 = std::chrono::steady_clock::now();
   const BenchRun straight = run_or_read_back(q, cel, root, dir / "straight", made);
@@ -382,13 +404,7 @@ TEST(BenchRunFile, ACutRunContinuesFromItsCheckpoint) {
   for (double fraction : {0.5, 0.25, 0.75}) {  // a loaded machine shifts the phases: try others
     if (continued > 0) break;
     const auto cut = dir / ("cut" + std::to_string(++tried));
-    std::thread ctrl_c([&] {
-      std::this_thread::sleep_for(std::chrono::duration<double>(fraction * wall));
-      request_interrupt();
-    });
-    const BenchRun first = run_or_read_back(q, cel, root, cut, made);
-    ctrl_c.join();
-    clear_interrupt_request();
+    const BenchRun first = run_cut_by_ctrl_c(q, cel, root, cut, fraction * wall);
     if (first.status != "interrupted") continue;  // ended before the signal
     ASSERT_TRUE(std::filesystem::exists(interrupted_checkpoint(cut)));
     EXPECT_FALSE(saved_run_of(q, cel, root, cut));  // not an answer to read back
@@ -419,12 +435,8 @@ TEST(BenchRunFile, ARunKilledOutrightContinuesFromItsCheckpointOnTheWay) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("feedflow_bench_killed_" + std::to_string(::getpid()));
   const std::filesystem::path root = FEEDFLOW_SOURCE_DIR;
-  BenchQuestion q{
-      "rate", "rate", "cases/pilot_hopper.toml", {"hopper.outlet_width=120mm"}, false, {}, {}, {}};
-  BenchPoint cel = point("CEL cells 20mm", "L2");
-  cel.solver = Solver::cel;
-  cel.sets = {"cel.cell_size=20mm"};
-  cel.time = 0.3;
+  const BenchQuestion q = wide_outlet_rate();
+  const BenchPoint cel = coarse_cel_point();
   bool made = false;
   // The first status run.json shows while the straight run goes is "interrupted".
   std::string first_seen;
@@ -447,13 +459,7 @@ TEST(BenchRunFile, ARunKilledOutrightContinuesFromItsCheckpointOnTheWay) {
   for (double fraction : {0.5, 0.25, 0.75}) {
     if (continued > 0) break;
     const auto cut = dir / ("cut" + std::to_string(fraction));
-    std::thread ctrl_c([&] {
-      std::this_thread::sleep_for(std::chrono::duration<double>(fraction * wall));
-      request_interrupt();
-    });
-    const BenchRun first = run_or_read_back(q, cel, root, cut, made);
-    ctrl_c.join();
-    clear_interrupt_request();
+    const BenchRun first = run_cut_by_ctrl_c(q, cel, root, cut, fraction * wall);
     if (first.status != "interrupted") continue;
     std::filesystem::rename(interrupted_checkpoint(cut),
                             scene_checkpoint_path(cut));  // as a kill leaves it
