@@ -386,6 +386,15 @@ BenchRun run_cut_by_ctrl_c(const BenchQuestion& q, const BenchPoint& p, const st
   return run;
 }
 
+// Whether the run in `folder` says in its run.log that it went on from its kept checkpoint.
+::testing::AssertionResult continued_from_kept_checkpoint(const std::filesystem::path& folder) {
+  std::ifstream log(folder / "run.log");
+  const std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+  if (said.find("restarted from " + interrupted_checkpoint(folder).string()) != std::string::npos)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << said;
+}
+
 // A simulation cut short (Ctrl-C part way) keeps its checkpoint, and the same point run again
 // continues from it to the answer of a run never cut, with the two parts' wall times added;
 // the answer is then read back, and the checkpoint of the cut is gone.
@@ -411,11 +420,7 @@ TEST(BenchRunFile, ACutRunContinuesFromItsCheckpoint) {
     const BenchRun second = run_or_read_back(q, cel, root, cut, made);
     EXPECT_TRUE(made);
     ASSERT_TRUE(second.done()) << second.status;
-    std::ifstream log(cut / "run.log");
-    const std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-    EXPECT_NE(said.find("restarted from " + interrupted_checkpoint(cut).string()),
-              std::string::npos)
-        << said;
+    EXPECT_TRUE(continued_from_kept_checkpoint(cut));
     EXPECT_EQ(physics_of(second), physics_of(straight)) << "cut after " << fraction * wall << " s";
     EXPECT_GT(second.wall_seconds, first.wall_seconds);
     EXPECT_FALSE(std::filesystem::exists(interrupted_checkpoint(cut)));
@@ -465,11 +470,7 @@ TEST(BenchRunFile, ARunKilledOutrightContinuesFromItsCheckpointOnTheWay) {
                             scene_checkpoint_path(cut));  // as a kill leaves it
     const BenchRun second = run_or_read_back(q, cel, root, cut, made);
     ASSERT_TRUE(second.done()) << second.status;
-    std::ifstream log(cut / "run.log");
-    const std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-    EXPECT_NE(said.find("restarted from " + interrupted_checkpoint(cut).string()),
-              std::string::npos)
-        << said;
+    EXPECT_TRUE(continued_from_kept_checkpoint(cut));
     EXPECT_EQ(physics_of(second), physics_of(straight));
     ++continued;
   }
