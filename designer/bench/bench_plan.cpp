@@ -130,6 +130,20 @@ std::string file_name_friendly(std::string text) {
 
 std::string point_id(const BenchPoint& point) { return file_name_friendly(point.rung + "_" + point.setting); }
 
+BenchQuestion chute_question(std::string id, std::string title, std::string case_file,
+                             std::vector<std::string> sets, double deposit, int quick_levels) {
+  BenchQuestion q{
+      std::move(id), std::move(title), std::move(case_file), std::move(sets), false, {}, {}, {}};
+  add_model_alternatives(q, "chute.stopping_thickness", "stopping_thickness", "L0");
+  add_model_alternatives(q, "chute.deposit", "deposit_thickness_mid_ramp", "L1");
+  add_cel_points(q, "deposit_thickness_mid_ramp", std::nullopt, {deposit, "the deposit"},
+                 quick_levels);
+  for (auto& p : q.points)
+    if (p.solver == Solver::cel) p.rest_key = "at_rest";
+  add_dem_points(q, "deposit_thickness_mid_ramp", "24mm");
+  return q;
+}
+
 BenchQuestion drum_question(const std::string& rpm, bool regime) {
   BenchQuestion q{std::string("drum_") + (regime ? "regime_" : "angle_") + rpm + "rpm",
                   std::string("Rotating drum at ") + rpm +
@@ -206,21 +220,15 @@ std::vector<BenchQuestion> seed_bench_questions() {
   }
 
   for (const char* angle : {"29_5", "37"}) {
-    BenchQuestion q{std::string("chute_stopping_thickness_") + angle,
-                    std::string("Inclined plane at ") + (angle == std::string("37") ? "37" : "29.5") +
-                        " deg: deposit thickness mid-ramp",
-                    std::string("cases/inclined_plane_") + angle + ".toml", {}, false, {}, {}, {}};
-    add_model_alternatives(q, "chute.stopping_thickness", "stopping_thickness", "L0");
-    add_model_alternatives(q, "chute.deposit", "deposit_thickness_mid_ramp", "L1");
+    const bool steep = angle == std::string("37");
     // The flow comes to rest after ~9 s at 29.5 deg and ~30 s at 37 deg (L1): a CEL run at
     // 20 mm takes minutes at 29.5 deg, so the quick bench has that one level only.
     // The deposit the cells must resolve: about 45 mm at 29.5 deg, 3.5 mm at 37 deg (L0).
-    const Feature deposit{angle == std::string("37") ? 3.5 * kMm : 45 * kMm, "the deposit"};
-    add_cel_points(q, "deposit_thickness_mid_ramp", std::nullopt, deposit, angle == std::string("29_5") ? 1 : 0);
-    for (auto& p : q.points)
-      if (p.solver == Solver::cel) p.rest_key = "at_rest";
-    add_dem_points(q, "deposit_thickness_mid_ramp", "24mm");
-    questions.push_back(std::move(q));
+    questions.push_back(chute_question(std::string("chute_stopping_thickness_") + angle,
+                                       std::string("Inclined plane at ") + (steep ? "37" : "29.5") +
+                                           " deg: deposit thickness mid-ramp",
+                                       std::string("cases/inclined_plane_") + angle + ".toml", {},
+                                       steep ? 3.5 * kMm : 45 * kMm, steep ? 0 : 1));
   }
 
   for (const char* rpm : {"10", "20", "50"})

@@ -82,6 +82,13 @@ std::string point_id(const BenchPoint& point);
 // The questions of the seed's scenes with all their points (pilot hopper, inclined plane, drum).
 std::vector<BenchQuestion> seed_bench_questions();
 
+// A deposit-thickness question on an inclined-plane case (its `sets` pose it: "chute.angle=33deg"),
+// on every rung and setting: the stopping-thickness and deposit models, CEL levels (those with
+// at least kReferenceCellsAcross cells across `deposit` [m] make the reference; the first
+// `quick_levels` are quick) and DEM with each law.
+BenchQuestion chute_question(std::string id, std::string title, std::string case_file,
+                             std::vector<std::string> sets, double deposit, int quick_levels);
+
 // The seed drum (cases/rotating_drum_20rpm.toml) at `rpm` ("10", "12.5"): its angle of repose
 // or its regime, on every rung and setting, as the bench asks it.
 BenchQuestion drum_question(const std::string& rpm, bool regime);

@@ -140,6 +140,36 @@ std::string drum_calibration_toml(const DrumCalibration& c,
   return o.str();
 }
 
+std::string chute_calibration_toml(const ChuteCalibration& c,
+                                   const std::vector<ChutePointRecord>& points) {
+  std::ostringstream o;
+  o << "# Written by `feedflow calibrate`: Pouliquen's h_stop law fitted to a full rung's deposits "
+       "over the\n# inclination of a plane. The chute check uses it; the drum's flowing layer "
+       "keeps [surface_flow].\n";
+  o << "[calibration.chute]\n";
+  o << "against = " << quoted(c.against) << "\n";
+  o << "rung = " << quoted(c.rung) << "\n";
+  o << "scene = " << quoted(c.scene) << "\n";
+  o << "lowest_angle = " << quoted(number(in_degrees(c.lowest_angle)) + " deg") << "\n";
+  o << "highest_angle = " << quoted(number(in_degrees(c.highest_angle)) + " deg") << "\n";
+  o << "commit = " << quoted(c.commit) << "\n";
+  o << "date = " << quoted(c.date) << "\n";
+  o << "coefficients = { theta2 = "
+    << quoted(number(in_degrees(c.law.coefficients.at("theta2"))) + " deg")
+    << ", stop_length = " << quoted(number(c.law.coefficients.at("stop_length") * 1e3) + " mm")
+    << " }\n";
+  write_figures(o, c.law.figures);
+  for (const auto& p : points) {
+    o << "\n[[calibration.chute.points]]\n";
+    o << "angle = " << quoted(format_number(in_degrees(p.angle), 6) + " deg") << "\n";
+    o << "deposit_thickness = " << quoted(format_number(p.reference * 1e3, 6) + " mm") << "\n";
+    o << "error_bar = " << quoted(format_number(p.error_bar * 1e3, 4) + " mm") << "\n";
+    o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
+    o << "source = " << quoted(p.source) << "\n";
+  }
+  return o.str();
+}
+
 std::string with_calibration(std::string_view text, std::string_view table, CalibrationPart part) {
   const std::string kept = without_calibration(text, part);
   return kept + (kept.empty() ? "" : "\n") + std::string(table);

@@ -39,6 +39,20 @@ struct ArchingPointRecord {
   std::string source;  // the verified record it came from
 };
 
+// One inclination as [[calibration.chute.points]] records it.
+struct ChutePointRecord {
+  double angle = 0.0;      // [rad]
+  double reference = 0.0;  // deposit thickness mid-ramp [m]
+  double error_bar = 0.0;  // [m]
+  bool held_out = false;
+  std::string source;
+};
+
+// "[calibration.chute]" with its coefficients (theta2 in degrees, L in millimetres) and
+// [[calibration.chute.points]].
+std::string chute_calibration_toml(const ChuteCalibration& c,
+                                   const std::vector<ChutePointRecord>& points);
+
 // "[calibration.arching]" with its rows ([calibration.arching.rows.<row>]) and
 // [[calibration.arching.points]].
 std::string arching_calibration_toml(const ArchingCalibration& c,

@@ -12,15 +12,19 @@
 namespace feedflow {
 namespace {
 
-constexpr std::string_view kKeys[] = {"against",       "rung",   "scene",  "geometry",
-                                      "density_model", "commit", "date",   "discharge",
-                                      "points",        "drum",   "arching"};
+constexpr std::string_view kKeys[] = {"against",       "rung",   "scene",   "geometry",
+                                      "density_model", "commit", "date",    "discharge",
+                                      "points",        "drum",   "arching", "chute"};
 constexpr std::string_view kArchingKeys[] = {"against", "rung", "scene", "geometry", "flow_factor",
                                              "commit",  "date", "rows",  "points"};
 constexpr std::string_view kDrumKeys[] = {"against",      "rung",          "scene",  "end_walls",
                                           "diameter",     "fill_fraction", "commit", "date",
                                           "coefficients", "figures",       "points"};
 constexpr std::string_view kDrumCoefficients[] = {"layer_fraction", "friction_shift"};
+constexpr std::string_view kChuteKeys[] = {"against",       "rung",   "scene", "lowest_angle",
+                                           "highest_angle", "commit", "date",  "coefficients",
+                                           "figures",       "points"};
+constexpr std::string_view kChuteCoefficients[] = {"theta2", "stop_length"};
 constexpr std::string_view kModelKeys[] = {"coefficients", "figures"};
 
 const toml::table& table_at(const toml::node& node, const std::string& key, const TableContext& ctx) {
@@ -205,6 +209,56 @@ ArchingCalibration read_arching(const toml::table& t, const TableContext& ctx) {
   return a;
 }
 
+// An angle in (0, 90) deg.
+double read_inclination(const toml::node& node, const std::string& key, const TableContext& ctx) {
+  const double radians = read_quantity(node, dim::angle, key, ctx);
+  if (!(radians > 0.0 && radians < 90.0 * kDegree))
+    throw InputError(location(node, ctx.file), key, "expected an angle in (0, 90) deg");
+  return radians;
+}
+
+// [calibration.chute]: theta2 in (0, 90) deg and L in (0, 10 m], with the fitted inclinations'
+// range.
+ChuteCalibration read_chute(const toml::table& t, const TableContext& ctx) {
+  for (auto&& [k, node] : t) require_known_key(node, k.str(), kChuteKeys, ctx);
+  ChuteCalibration c;
+  c.against = required_choice(t, "against", "cel", "dem", ctx);
+  c.rung = required_text(t, "rung", ctx);
+  c.scene = required_text(t, "scene", ctx);
+  for (auto [key, angle] :
+       {std::pair{"lowest_angle", &c.lowest_angle}, std::pair{"highest_angle", &c.highest_angle}}) {
+    const toml::node* node = t.get(key);
+    if (!node) missing_key(t, ctx.dotted(key), "an angle, e.g. \"29.5 deg\"", ctx.file);
+    *angle = read_inclination(*node, ctx.dotted(key), ctx);
+  }
+  if (c.lowest_angle > c.highest_angle)
+    throw InputError(location(*t.get("highest_angle"), ctx.file), ctx.dotted("highest_angle"),
+                     "expected an angle at least lowest_angle's");
+  c.commit = required_text(t, "commit", ctx);
+  c.date = required_text(t, "date", ctx);
+  const toml::node* node = t.get("coefficients");
+  if (!node) missing_key(t, ctx.dotted("coefficients"), "theta2 and stop_length", ctx.file);
+  TableContext cctx = ctx;
+  cctx.prefix = ctx.dotted("coefficients");
+  const toml::table& coefficients = table_at(*node, cctx.prefix, ctx);
+  for (auto&& [k, v] : coefficients) require_known_key(v, k.str(), kChuteCoefficients, cctx);
+  const toml::node* theta2 = coefficients.get("theta2");
+  if (!theta2)
+    missing_key(coefficients, cctx.dotted("theta2"), "an angle, e.g. \"41 deg\"", ctx.file);
+  c.law.coefficients["theta2"] = read_inclination(*theta2, cctx.dotted("theta2"), cctx);
+  const toml::node* length = coefficients.get("stop_length");
+  if (!length)
+    missing_key(coefficients, cctx.dotted("stop_length"), "a length, e.g. \"12 mm\"", ctx.file);
+  const double l = read_quantity(*length, dim::length, cctx.dotted("stop_length"), cctx);
+  if (!(l > 0.0 && l <= 10.0))
+    throw InputError(location(*length, ctx.file), cctx.dotted("stop_length"),
+                     "expected a length in (0, 10 m] (L of Pouliquen's h_stop)");
+  c.law.coefficients["stop_length"] = l;
+  c.law.figures = read_figures(t, ctx);
+  c.points = point_count(t, ctx);
+  return c;
+}
+
 }  // namespace
 
 Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
@@ -220,7 +274,13 @@ Calibration read_calibration(const toml::table& t, const TableContext& ctx) {
     actx.prefix = ctx.dotted("arching");
     c.arching = read_arching(table_at(*a, actx.prefix, ctx), actx);
   }
-  if (t.size() == (c.drum ? 1u : 0u) + (c.arching ? 1u : 0u)) return c;  // no discharge part
+  if (const toml::node* h = t.get("chute")) {
+    TableContext hctx = ctx;
+    hctx.prefix = ctx.dotted("chute");
+    c.chute = read_chute(table_at(*h, hctx.prefix, ctx), hctx);
+  }
+  if (t.size() == (c.drum ? 1u : 0u) + (c.arching ? 1u : 0u) + (c.chute ? 1u : 0u))
+    return c;  // no discharge part
   c.against = required_choice(t, "against", "cel", "dem", ctx);
   c.rung = required_text(t, "rung", ctx);
   c.scene = required_text(t, "scene", ctx);

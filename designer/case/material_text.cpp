@@ -33,6 +33,7 @@ bool calibration_header(std::string_view line, CalibrationPart part) {
   if (part == CalibrationPart::all) return true;
   const CalibrationPart own = names(name, "calibration.drum")      ? CalibrationPart::drum
                               : names(name, "calibration.arching") ? CalibrationPart::arching
+                              : names(name, "calibration.chute")   ? CalibrationPart::chute
                                                                    : CalibrationPart::hopper;
   return own == part;
 }

@@ -14,9 +14,9 @@ std::string material_text(const Material& material);
 
 // The parts of a material's calibration, each written by its own `feedflow calibrate`: the
 // hopper's discharge ([calibration], its discharge rows and points) and the drum's flowing layer
-// ([calibration.drum] and its points), and the arching models' strength ([calibration.arching]
-// and its points).
-enum class CalibrationPart { all, hopper, drum, arching };
+// ([calibration.drum] and its points), the arching models' strength ([calibration.arching]
+// and its points), and the chute's stopping-thickness law ([calibration.chute] and its points).
+enum class CalibrationPart { all, hopper, drum, arching, chute };
 
 // `text` without the calibration tables of `part` ("[calibration]",
 // "[calibration.discharge.beverloo]", "[[calibration.points]]"; "[calibration.drum]",

@@ -1,11 +1,13 @@
 // feedflow calibrate MATERIAL --against cel|dem: fits the reduced models' free coefficients to
 // full-rung results over a design of experiments, and writes them into the material file: for a
 // hopper case the discharge models' coefficients over outlet width x semi-angle ([calibration]),
-// for a drum case the flowing layer over drum speeds ([calibration.drum]); some points held out.
+// for a drum case the flowing layer over drum speeds ([calibration.drum]), for an inclined-plane
+// case Pouliquen's h_stop law over the inclination ([calibration.chute]); some points held out.
 // Runs are made through the bench's machinery and kept in the output folder: a repeated or
 // interrupted calibration reads back what is done.
 #include <chrono>
 #include <ctime>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -14,6 +16,7 @@
 #include "designer/calibrate/arching_report.hpp"
 #include "designer/calibrate/calibration_design.hpp"
 #include "designer/calibrate/calibration_report.hpp"
+#include "designer/calibrate/chute_calibration_report.hpp"
 #include "designer/calibrate/drum_calibration_report.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_library.hpp"
@@ -48,7 +51,9 @@ struct CalibrateArguments {
   // A drum: its speeds, all within the material's rolling regime (the angle model's domain). The
   // CEL drum's runs at 10 and 20 rpm are the bench's (read back when its run folders are here).
   std::string speeds = "10,20,30 rpm";
-  std::string finest_cell = "5mm";
+  // An inclined plane: its fitted inclinations (the seed's two).
+  std::string angles = "29.5,37 deg";
+  std::string finest_cell;  // empty: a drum's 5 mm, a plane's 10 mm
   std::vector<double> cells_across = {3.0, 6.0};
   std::optional<double> order;
   std::string time = "1s";  // after the opening, as the bench measured the hopper's rate
@@ -126,9 +131,14 @@ struct RunTally {
   std::set<std::string> commits;  // of the programs that made the runs ("" unrecorded)
 };
 
+// A check of a point's runs before its reference is made (it may take levels out of the
+// reference): why the point has no reference, or empty.
+using LevelCheck =
+    std::function<std::string(BenchQuestion&, const std::map<std::string, BenchRun>&)>;
+
 // Each point's runs, made or read back, and its reference; false when Ctrl-C stopped them.
 bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root,
-               std::vector<CalibrationPoint>& points, RunTally& tally) {
+               std::vector<CalibrationPoint>& points, RunTally& tally, const LevelCheck& check) {
   const bool say = args.options.human_output();
   std::size_t total = 0, k = 0;
   for (const auto& p : points) total += p.question.points.size();
@@ -152,6 +162,9 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
       tally.commits.insert(run.commit);
       runs[point_id(bp)] = std::move(run);
     }
+    if (check && point.status == "done")
+      if (std::string why = check(point.question, runs); !why.empty())
+        point.status = std::move(why);
     point.reference = tabulate(point.question, runs).reference;
     const BenchReference& r = point.reference;
     if (point.status != "done") continue;
@@ -180,10 +193,11 @@ std::vector<Case> point_cases(const CalibrationOutcome& o) {
 // Every point's runs made or read back below OUT/runs, the tally in the outcome; false (having
 // said how to continue) when Ctrl-C stopped them.
 template <class Outcome>
-bool run_points(const CalibrateArguments& args, const std::filesystem::path& out, Outcome& o) {
+bool run_points(const CalibrateArguments& args, const std::filesystem::path& out, Outcome& o,
+                const LevelCheck& check = {}) {
   install_interrupt_handler();
   RunTally tally;
-  const bool complete = make_runs(args, out / "runs", o.points, tally);
+  const bool complete = make_runs(args, out / "runs", o.points, tally, check);
   o.runs_made = tally.made;
   o.runs_read_back = tally.read_back;
   o.run_commits = tally.commits;
@@ -280,6 +294,15 @@ int run_hopper_calibration(const CalibrateArguments& args,
   return kExitOk;
 }
 
+double finest_cell(const CalibrateArguments& args, const char* scene_default) {
+  const std::string text = args.finest_cell.empty() ? scene_default : args.finest_cell;
+  try {
+    return parse_quantity_as(text, dim::length, false);
+  } catch (const std::invalid_argument& e) {
+    throw InputError("--finest-cell", text, e.what());
+  }
+}
+
 DrumCalibrationDesign drum_design_of(const CalibrateArguments& args, const Case& drum_case,
                                      const Material& material) {
   DrumCalibrationDesign d;
@@ -291,11 +314,7 @@ DrumCalibrationDesign drum_design_of(const CalibrateArguments& args, const Case&
                               ? std::vector<double>{}
                               : quantity_list(args.held_out.empty() ? kDrumHeldOut : args.held_out,
                                               dim::angular_speed, "--held-out"));
-  try {
-    d.finest_cell = parse_quantity_as(args.finest_cell, dim::length, false);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--finest-cell", args.finest_cell, e.what());
-  }
+  d.finest_cell = finest_cell(args, "5mm");
   d.check();
   return d;
 }
@@ -434,8 +453,85 @@ int run_arching_calibration(const CalibrateArguments& args, const Case& hopper_c
   return kExitOk;
 }
 
+ChuteCalibrationDesign chute_design_of(const CalibrateArguments& args, const Case& plane_case,
+                                       const Material& material) {
+  ChuteCalibrationDesign d;
+  d.case_file = args.case_file;
+  if (plane_case.material.name != material.name) d.material = args.material;
+  d.against = args.against;
+  d.points = inclination_points(quantity_list(args.angles, dim::angle, "--angles"),
+                                args.held_out.empty() || args.held_out == "none"
+                                    ? std::vector<double>{}
+                                    : quantity_list(args.held_out, dim::angle, "--held-out"));
+  d.finest_cell = finest_cell(args, "10mm");
+  d.check();
+  return d;
+}
+
+// Pouliquen's h_stop law (theta2 and L; theta1 held) fitted to the rung's deposits over the
+// plane's inclination.
+int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case,
+                          std::chrono::steady_clock::time_point start) {
+  const Material material =
+      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
+          .load(args.material);
+  if (!material.surface_flow)
+    throw InputError(material.origin, "material.surface_flow",
+                     "a chute calibration needs the material's [surface_flow] (theta1 is held)");
+  ChuteCalibrationOutcome o;
+  o.design = chute_design_of(args, plane_case, material);
+  o.material = material.name;
+  for (const auto& p : o.design.points)
+    o.points.push_back({chute_point_question(o.design, p), {}, "done"});
+  for (const auto& p : o.points) {  // every point's case, before any run
+    std::vector<SetOverride> overrides;
+    for (const auto& s : p.question.sets) overrides.push_back(parse_set_override(s));
+    (void)load_case(o.design.case_file, overrides);
+  }
+  if (args.list) {
+    for (const auto& p : o.points)
+      for (const auto& bp : p.question.points)
+        std::cout << bench_invocation(p.question, bp) << '\n';
+    return kExitOk;
+  }
+  const std::filesystem::path out = output_folder(args, material);
+  OutputFolder folder(out, "--out");
+  if (!run_points(args, out, o, keep_resolving_levels)) return kExitInterrupted;
+  for (std::size_t i = 0; i < o.points.size(); ++i) {
+    if (o.points[i].status != "done") continue;
+    const BenchReference& r = o.points[i].reference;
+    const double metres = parse_quantity_as("1 " + r.unit, dim::length, false);
+    o.observations.push_back({o.design.points[i].angle, *r.value * metres,
+                              r.error_bar.value_or(0.0) * metres, o.design.points[i].held_out});
+    o.observed.push_back(i);
+  }
+  const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
+                                    [](const StopObservation& x) { return !x.held_out; });
+  if (fitted < 2)
+    throw NumericalFailure("calibration: only " + std::to_string(fitted) +
+                           " fitted inclination(s) have a reference deposit; see the runs in " +
+                           (out / "runs").string());
+  o.fit = fit_stop_law(o.observations, material);
+  // A law that could not be fitted is not written: the material keeps what it had.
+  if (!o.fit.failure.empty())
+    throw NumericalFailure(
+        "calibration: the stopping-thickness law could not be fitted (" + o.fit.failure +
+        "); the material file is left as it was; see the runs in " + (out / "runs").string());
+  const ChuteCalibration table =
+      chute_calibration_table(o, plane_case.name, commit_text(kCommit, o.run_commits), today());
+  const auto target = material_target(args, material, out);
+  write_calibration(args, chute_calibration_json(o, table), out, target,
+                    with_calibration(material_text(material),
+                                     chute_calibration_toml(table, chute_point_records(o)),
+                                     CalibrationPart::chute),
+                    folder,
+                    chute_calibration_summary(o, table) + runs_text(o.runs_made, o.runs_read_back),
+                    start);
+  return kExitOk;
+}
+
 // A hopper case calibrates the discharge (or, with --arching, the arching models), a drum case
-// the flowing layer.
+// the flowing layer, an inclined-plane case the stopping-thickness law.
 int run_calibrate(const CalibrateArguments& args) {
   const auto start = std::chrono::steady_clock::now();
   const Case c = load_case(args.case_file, {});
@@ -446,9 +542,11 @@ int run_calibrate(const CalibrateArguments& args) {
     return run_arching_calibration(args, c, start);
   }
   if (std::holds_alternative<Drum>(c.equipment)) return run_drum_calibration(args, c, start);
+  if (std::holds_alternative<Chute>(c.equipment)) return run_chute_calibration(args, c, start);
   if (!std::holds_alternative<Hopper>(c.equipment))
     throw InputError("--case", args.case_file,
-                     "a hopper case (discharge) or a drum case (flowing layer)");
+                     "a hopper case (discharge), a drum case (flowing layer) or an inclined-plane "
+                     "case (stopping thickness)");
   return run_hopper_calibration(args, start);
 }
 
@@ -459,7 +557,7 @@ void add_calibrate_command(Command& program, int& exit_code) {
   auto command = program.subcommand("calibrate",
                                     "fit the reduced models' coefficients to a full rung over a "
                                     "design of experiments (hopper: discharge; drum: "
-                                    "flowing layer)");
+                                    "flowing layer; inclined plane: stopping thickness)");
   command.option("material", args->material, "the material to calibrate (see `feedflow materials`)")
       .required();
   command.option("--against", args->against, "the full rung to fit to")
@@ -467,7 +565,8 @@ void add_calibrate_command(Command& program, int& exit_code) {
       .one_of({"cel", "dem"});
   command
       .option("--case", args->case_file,
-              "the case varied: a hopper's outlet and semi-angle, or a drum's speed")
+              "the case varied: a hopper's outlet and semi-angle, a drum's speed, or an inclined "
+              "plane's angle")
       .show_default()
       .type_name("FILE");
   command.option("--outlet-widths", args->outlet_widths, "outlet widths of the fitted grid")
@@ -481,15 +580,20 @@ void add_calibrate_command(Command& program, int& exit_code) {
               std::string(
                   "points left out of the fit to test it: a hopper's WIDTH@ANGLE,... (default ") +
                   kHopperHeldOut + "), a drum's speeds (default " + kDrumHeldOut +
-                  "), --arching's semi-angles (default none); none")
+                  "), a plane's angles (default none), --arching's semi-angles (default none); "
+                  "none")
       .type_name("LIST");
   command.option("--speeds", args->speeds, "a drum's fitted speeds, where it rolls")
       .show_default()
       .type_name("LIST");
   command
-      .option("--finest-cell", args->finest_cell,
-              "a drum's finest CEL level (the bench's refinement series down to it)")
+      .option("--angles", args->angles, "an inclined plane's fitted angles, each leaving a deposit")
       .show_default()
+      .type_name("LIST");
+  command
+      .option("--finest-cell", args->finest_cell,
+              "a drum's or a plane's finest CEL level (the refinement series from 20 mm down to "
+              "it; default 5 mm for a drum, 10 mm for a plane)")
       .type_name("LENGTH");
   command
       .option("--cells-across", args->cells_across,

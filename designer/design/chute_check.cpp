@@ -19,18 +19,30 @@ Estimate length_estimate(double value, double low, double high, std::string mode
   return Estimate{value, "m", low, high, std::move(model), rung, "mm"};
 }
 
+// The largest relative error a chute calibration records (0 without one).
+double calibration_error(const Material& m) {
+  return m.calibration && m.calibration->chute
+             ? largest_error(m.calibration->chute->law).value_or(0.0)
+             : 0.0;
+}
+
+std::string model_text(const Material& m, const StoppingThicknessModel& stop) {
+  return std::string(stop.summary) + (m.calibration && m.calibration->chute
+                                          ? ", calibrated against " + m.calibration->chute->rung
+                                          : std::string());
+}
+
 // Rung L0: the stopping thickness over the law's uncertainty and the cohesive infinite slope.
 void stopping_results(const Chute& chute, const Material& m, const StoppingThicknessModel& stop, Estimates& results,
                       std::vector<Finding>& notes) {
-  const std::string model(stop.summary);
-  const StoppingThickness nominal = stop.evaluate(pouliquen_law_of(*m.surface_flow), m, chute.angle);
+  const std::string model = model_text(m, stop);
+  const StoppingThicknessBand stopping = stopping_thickness_band(m, stop, chute.angle);
+  const StoppingThickness& nominal = stopping.nominal;
   results.emplace_back("deposit", labelled(to_string(nominal.outcome), model));
   if (nominal.outcome != DepositOutcome::Deposit) notes.push_back({std::nullopt, "deposit", nominal.words});
   if (nominal.outcome == DepositOutcome::NeverFlowsBelowTheta1) return;
-  Band band;
-  band.add(nominal.thickness);
-  for (const auto& corner : corner_laws(*m.surface_flow)) band.add(stop.evaluate(corner, m, chute.angle).thickness);
-  results.emplace_back("stopping_thickness", length_estimate(nominal.thickness, band.low, band.high, model, stop.rung));
+  results.emplace_back("stopping_thickness", length_estimate(nominal.thickness, stopping.low,
+                                                             stopping.high, model, stop.rung));
   if (m.surface_flow->cohesion > 0.0) {
     // The Mohr-Coulomb infinite slope with the low-stress cohesion, friction tan(theta1).
     const auto slope = cohesive_stopping_depth({m.surface_flow->cohesion, m.surface_flow->theta1, m.bulk.density},
@@ -60,13 +72,37 @@ void deposit_results(const ChuteDeposit& d, const ChuteDepositModel& row, Estima
   results.emplace_back("fraction_leaving_ramp", unbanded(released * 100, "%", by, row.rung));
 }
 
-std::vector<std::string> chute_assumptions(const Material& m, const StoppingThicknessModel& stop) {
+std::vector<std::string> chute_assumptions(const Chute& chute, const Material& m,
+                                           const StoppingThicknessModel& stop) {
   std::vector<std::string> out{
       "Stopping thickness: " + std::string(stop.summary) +
           " with theta1, theta2 and L from the material; thicknesses are normal to the ramp.",
       "The L1 release treats the bin as a reservoir feeding the gate (shallow-flow theory stretched in a bin as deep "
       "as it is long) and a no-slip ramp; its second-order well-balanced scheme on 10 mm cells is within 2 % of the "
       "refined deposit."};
+  if (m.calibration && m.calibration->chute) {
+    const ChuteCalibration& c = *m.calibration->chute;
+    std::string figures;
+    for (const auto& [name, text] : c.law.figures)
+      if (name.find("_before") == std::string::npos)
+        figures += (figures.empty() ? "" : ", ") + name + " " + text;
+    out.push_back("theta2 = " + format_quantity(m.surface_flow->theta2, "deg", 4) +
+                  " and L = " + format_quantity(m.surface_flow->stop_length, "mm", 4) +
+                  " are the material's [calibration.chute], fitted to " + c.rung + " over " +
+                  std::to_string(c.points) + " inclinations of " + c.scene + " (commit " +
+                  c.commit + ", " + c.date + (figures.empty() ? "" : "; " + figures) +
+                  "), theta1 = " + format_quantity(m.surface_flow->theta1, "deg", 4) +
+                  " held at the material's; the band is widened by " +
+                  format_number(100.0 * calibration_error(m), 3) + " %.");
+    constexpr double kSlack = 0.5 * kDegree;
+    if (chute.angle < c.lowest_angle - kSlack || chute.angle > c.highest_angle + kSlack)
+      out.push_back("This chute's " + format_quantity(chute.angle, "deg", 4) +
+                    " lies outside the calibrated inclinations (" +
+                    format_quantity(c.lowest_angle, "deg", 4) + " to " +
+                    format_quantity(c.highest_angle, "deg", 4) +
+                    "): the fitted law is extrapolated.");
+    return out;
+  }
   for (const auto& [key, source] : m.sources)
     if (key.rfind("surface_flow.", 0) == 0 && source.find("assumed") != std::string::npos) {
       out.push_back("theta1, theta2 and L of " + m.name +
@@ -77,6 +113,41 @@ std::vector<std::string> chute_assumptions(const Material& m, const StoppingThic
 }
 
 }  // namespace
+
+Material chute_material(const Material& m) {
+  if (!m.surface_flow)
+    throw InputError(
+        m.origin, "material.surface_flow",
+        "the chute models need the material's surface-flow law (theta1, theta2, stop_length in "
+        "[surface_flow]); material " +
+            m.name + " has none");
+  if (!m.calibration || !m.calibration->chute) return m;
+  Material out = m;
+  const CalibratedModel& law = m.calibration->chute->law;
+  out.surface_flow->theta2 = law.coefficients.at("theta2");
+  out.surface_flow->stop_length = law.coefficients.at("stop_length");
+  if (!(out.surface_flow->theta2 > out.surface_flow->theta1))
+    throw InputError(m.origin, "calibration.chute.coefficients.theta2",
+                     "expected an angle above the material's theta1 (" +
+                         format_quantity(m.surface_flow->theta1, "deg", 4) + "), got " +
+                         format_quantity(out.surface_flow->theta2, "deg", 4));
+  return out;
+}
+
+StoppingThicknessBand stopping_thickness_band(const Material& m, const StoppingThicknessModel& stop,
+                                              double angle) {
+  StoppingThicknessBand out{stop.evaluate(pouliquen_law_of(*m.surface_flow), m, angle), 0.0, 0.0};
+  Band band;
+  band.add(out.nominal.thickness);
+  for (const auto& corner : corner_laws(*m.surface_flow))
+    band.add(stop.evaluate(corner, m, angle).thickness);
+  const double error = calibration_error(m);
+  band.add(out.nominal.thickness * (1.0 - error));
+  band.add(out.nominal.thickness * (1.0 + error));
+  out.low = band.low;
+  out.high = band.high;
+  return out;
+}
 
 PouliquenLaw pouliquen_law_of(const SurfaceFlowProperties& s) {
   return {s.theta1, s.theta2, s.stop_length, s.flow_rule_beta, s.flow_rule_gamma};
@@ -89,7 +160,10 @@ std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s) {
       for (double c : {-1.0, 1.0}) {
         PouliquenLaw law = pouliquen_law_of(s);
         law.theta1 = std::max(0.0, s.theta1 + a * s.theta_uncertainty);
-        law.theta2 = std::max(law.theta1 + 0.5 * kDegree, s.theta2 + b * s.theta_uncertainty);
+        // theta2's upper corner short of 90 deg, where the law has no meaning.
+        law.theta2 =
+            std::max(law.theta1 + 0.5 * kDegree,
+                     std::min(s.theta2 + b * s.theta_uncertainty, 0.5 * (s.theta2 + 90 * kDegree)));
         law.length = s.stop_length * (1.0 + c * s.stop_length_uncertainty);
         laws.push_back(law);
       }
@@ -98,11 +172,7 @@ std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s) {
 
 void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignDetail detail,
                  DesignRecord& record) {
-  const Material& m = c.material;
-  if (!m.surface_flow)
-    throw InputError(m.origin, "material.surface_flow",
-                     "the chute models need the material's surface-flow law (theta1, theta2, stop_length in "
-                     "[surface_flow]); material " + m.name + " has none");
+  const Material m = chute_material(c.material);
   const StoppingThicknessModel& stop = models.of(stopping_thickness_models());
   std::vector<Finding> notes;
   stopping_results(chute, m, stop, record.results, notes);
@@ -119,7 +189,7 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
   record.verdict = verdict.verdict();
   if (detail == DesignDetail::results) return;
   record.charts = chute_charts(chute, m, stop, deposit);
-  record.assumptions = chute_assumptions(m, stop);
+  record.assumptions = chute_assumptions(chute, m, stop);
 }
 
 }  // namespace feedflow

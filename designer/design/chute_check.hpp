@@ -18,6 +18,20 @@ namespace feedflow {
 void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, DesignDetail detail,
                  DesignRecord& record);
 
+// The material as the chute check sees it: its [surface_flow] with theta2 and L from its
+// [calibration.chute] when it has one. Throws InputError (naming the file and key) without
+// [surface_flow], or for a calibrated theta2 not above theta1.
+Material chute_material(const Material& m);
+
+// The chosen law's stopping thickness at `angle` (rad), and its band over the uncertainty of
+// theta1, theta2 and L, widened by a chute calibration's largest error. `m`: a chute_material.
+struct StoppingThicknessBand {
+  StoppingThickness nominal;
+  double low = 0.0, high = 0.0;  // [m]
+};
+StoppingThicknessBand stopping_thickness_band(const Material& m, const StoppingThicknessModel& stop,
+                                              double angle);
+
 // The corners of the uncertainty of theta1, theta2 and L of a material's surface-flow law.
 PouliquenLaw pouliquen_law_of(const SurfaceFlowProperties& s);
 std::vector<PouliquenLaw> corner_laws(const SurfaceFlowProperties& s);

@@ -31,17 +31,6 @@ RollingLayerModel layer_model(const Material& m, double layer_fraction, double f
           layer_fraction, m.drum_flow->end_wall_friction};
 }
 
-// "6.32 %" -> 0.0632; none for other text.
-std::optional<double> percent(const std::map<std::string, std::string>& figures, const char* name) {
-  const auto it = figures.find(name);
-  if (it == figures.end() || it->second.find('%') == std::string::npos) return std::nullopt;
-  try {
-    return std::stod(it->second) / 100.0;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
 // Fr over the Fr of the nearest regime boundary (by the ratio), and that boundary in words.
 std::pair<double, std::string> nearest_boundary(double froude, const DrumRegimeThresholds& t) {
   double nearest = 1e9;
@@ -145,11 +134,8 @@ DrumRegimeThresholds regime_thresholds(const DrumFlowProperties& d) {
 DrumLayer drum_layer(const Material& m) {
   if (m.calibration && m.calibration->drum) {
     const DrumCalibration& c = *m.calibration->drum;
-    DrumLayer out{c.layer.coefficients.at("layer_fraction"),
-                  c.layer.coefficients.at("friction_shift"), 0.0, &c};
-    for (const char* figure : {"fit_rms_error", "held_out_max_error"})
-      if (const auto x = percent(c.layer.figures, figure)) out.error = std::max(out.error, *x);
-    return out;
+    return {c.layer.coefficients.at("layer_fraction"), c.layer.coefficients.at("friction_shift"),
+            largest_error(c.layer).value_or(0.0), &c};
   }
   return {m.drum_flow->layer_fraction, 0.0, 0.0, nullptr};
 }

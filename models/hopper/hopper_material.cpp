@@ -12,27 +12,15 @@
 namespace feedflow {
 namespace {
 
-// "1.38 %" as 1.38; nothing for any other text.
-std::optional<double> percent_figure(const std::string& text) {
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
-  if (end == text.c_str()) return std::nullopt;
-  while (*end == ' ') ++end;
-  if (std::string_view(end) != "%") return std::nullopt;
-  return x;
-}
-
 // The row with the smallest `figure` among the fitted rows; empty when no row has it.
 std::pair<std::string, std::string> best_by(const Calibration& c, const std::string& figure) {
   std::pair<std::string, std::string> best;
   double lowest = 0.0;
   for (const auto& [row, fitted] : c.discharge) {
-    const auto it = fitted.figures.find(figure);
-    if (it == fitted.figures.end()) continue;
-    const auto x = percent_figure(it->second);
+    const auto x = percent_figure(fitted, figure);
     if (x && (best.first.empty() || *x < lowest)) {
       lowest = *x;
-      best = {row, it->second};
+      best = {row, fitted.figures.at(figure)};
     }
   }
   return best;
@@ -70,11 +58,7 @@ HopperMaterial HopperMaterial::of(const Material& m, const HopperDensityModel& d
         std::vector<double> values;
         for (const auto& k : row.coefficients) values.push_back(fitted.coefficients.at(std::string(k.name)));
         dc.coefficients.emplace(row_name, std::move(values));
-        for (const char* figure : {"fit_rms_error", "held_out_max_error"}) {
-          const auto it = fitted.figures.find(figure);
-          const auto x = it == fitted.figures.end() ? std::nullopt : percent_figure(it->second);
-          if (x) dc.row_error[row_name] = std::max(dc.row_error[row_name], *x / 100.0);
-        }
+        if (const auto error = largest_error(fitted)) dc.row_error[row_name] = *error;
       }
       auto best = best_by(c, "held_out_max_error");
       if (!best.first.empty()) {

@@ -3,8 +3,8 @@
 // to a full rung over a design of experiments, with what they were fitted to (rung, scene,
 // commit, date) and how well (residuals before and after, on the fitted and the held-out points).
 // The design check uses them for hoppers of the calibrated geometry and says so. A drum
-// calibration ([calibration.drum]) and an arching one ([calibration.arching]) have their own
-// provenance: each is made and written apart.
+// calibration ([calibration.drum]), an arching one ([calibration.arching]) and a chute one
+// ([calibration.chute]) have their own provenance: each is made and written apart.
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +18,13 @@ struct CalibratedModel {
   std::map<std::string, double> coefficients;
   std::map<std::string, std::string> figures;  // fit_rms_error, held_out_max_error, before_...
 };
+
+// The figure `name` of `m` as a fraction ("6.32 %" -> 0.0632); none when absent or not a
+// percentage.
+std::optional<double> percent_figure(const CalibratedModel& m, const std::string& name);
+// The largest of the fit's errors (fit_rms_error, held_out_max_error) as a fraction; none
+// without either.
+std::optional<double> largest_error(const CalibratedModel& m);
 
 // The drum's flowing layer (drum_check, reduced_models.md section 4) fitted to a rung's angles
 // of repose over drum speeds: coefficients "layer_fraction" (c_delta) and "friction_shift" [rad]
@@ -51,6 +58,20 @@ struct ArchingCalibration {
   std::size_t points = 0;                       // semi-angles bracketed (fitted and held out)
 };
 
+// Pouliquen's stopping-thickness law fitted to a rung's deposits on an inclined plane over its
+// inclination: coefficients "theta2" [rad] and "stop_length" [m] (L), theta1 held at the
+// material's (every layer static below it). The chute check uses them instead of the
+// material's [surface_flow] theta2 and L; the drum's flowing layer keeps the material's.
+struct ChuteCalibration {
+  std::string against;  // "cel" | "dem"
+  std::string rung;     // what the references were, in words
+  std::string scene;    // the plane case whose inclination the design of experiments varied
+  double lowest_angle = 0.0, highest_angle = 0.0;  // [rad] the fitted inclinations' range
+  std::string commit, date;                        // of the program that made the references
+  CalibratedModel law;
+  std::size_t points = 0;  // design points (fitted and held out)
+};
+
 struct Calibration {
   std::string against;        // "cel" | "dem"
   std::string rung;           // what the references were, in words
@@ -62,6 +83,7 @@ struct Calibration {
   std::size_t points = 0;     // design points (fitted and held out)
   std::optional<DrumCalibration> drum;  // [calibration.drum]
   std::optional<ArchingCalibration> arching;  // [calibration.arching]
+  std::optional<ChuteCalibration> chute;      // [calibration.chute]
 };
 
 }  // namespace feedflow

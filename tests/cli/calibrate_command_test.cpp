@@ -3,11 +3,13 @@
 // design check that then uses the coefficients, and bad input refused by flag.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 
 #include <nlohmann/json.hpp>
 
 #include "designer/bench/bench_run.hpp"
+#include "designer/calibrate/chute_calibration_design.hpp"
 #include "designer/calibrate/drum_calibration_design.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/design/drum_check.hpp"
@@ -216,6 +218,90 @@ TEST(CalibrateCommand, AVerifiedCriticalWidthCalibratesTheArchingModels) {
   fs::remove_all(dir);
 }
 
+// Pouliquen's h_stop with the pine's theta1 (27 deg), theta2 = 45 deg and L = 50 mm [m].
+double plane_deposit(double degrees) {
+  const double t = std::tan(degrees * feedflow::kDegree), t1 = std::tan(27 * feedflow::kDegree);
+  return 0.05 * (1.0 - t) / (t - t1);
+}
+
+// CEL plane runs laid down as the bench keeps them, at rest, each level's deposit `deposit(deg,
+// cell)` [m].
+void lay_down_plane_runs(const fs::path& dir, const std::vector<double>& fitted,
+                         const std::vector<double>& held_out,
+                         const std::function<double(double, double)>& deposit) {
+  feedflow::ChuteCalibrationDesign d;
+  d.case_file = "cases/inclined_plane_29_5.toml";
+  d.finest_cell = 0.01;
+  std::vector<double> fitted_angles, held_angles;
+  for (double deg : fitted) fitted_angles.push_back(deg * feedflow::kDegree);
+  for (double deg : held_out) held_angles.push_back(deg * feedflow::kDegree);
+  d.points = feedflow::inclination_points(fitted_angles, held_angles);
+  for (const auto& point : d.points) {
+    const feedflow::BenchQuestion q = feedflow::chute_point_question(d, point);
+    for (const auto& p : q.points) {
+      feedflow::BenchRun run;
+      run.invocation = feedflow::bench_invocation(q, p);
+      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
+      run.wall_seconds = 1.0;
+      run.commit = "test";
+      run.results = {
+          {"deposit_thickness_mid_ramp",
+           {{"value", deposit(feedflow::in_degrees(point.angle), *p.cell_size)}, {"unit", "m"}}},
+          {"at_rest", {{"value", "yes"}}}};
+      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
+    }
+  }
+}
+
+// A chute calibration on CEL plane runs (20 and 10 mm levels 4 and 2 % above the deposits of a
+// known law, so Richardson at order 1 gives the law's): every run is read back, the fit recovers
+// theta2 and L (theta1 held), the held-out inclination is met, the material file gains
+// [calibration.chute], and `design` on the plane uses it and says so.
+TEST(CalibrateCommand, AnInclinedPlaneCaseCalibratesTheStoppingThicknessLaw) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_chute", true);
+  lay_down_plane_runs(dir, {29.5, 31, 33}, {32}, [](double deg, double cell) {
+    return plane_deposit(deg) * (1.0 + 2.0 * cell);
+  });
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against cel --case cases/inclined_plane_29_5.toml --angles "
+      "\"29.5,31,33 deg\" --held-out \"32 deg\" --out c",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("0 run(s) made, 8 read back"), std::string::npos) << r.out;
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  const auto& law = json["stopping_thickness_law"];
+  EXPECT_NEAR(feedflow::in_degrees(law["theta2_after"]["value"].get<double>()), 45.0, 1e-3);
+  EXPECT_NEAR(law["stop_length_after"]["value"].get<double>(), 0.05, 1e-6);
+  EXPECT_LT(law["held_out_max_error_after"].get<double>(), 1e-5);
+  const std::string material = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  EXPECT_NE(material.find("[calibration.chute]"), std::string::npos);
+  EXPECT_NE(material.find("[[calibration.chute.points]]"), std::string::npos);
+
+  const feedflow::testing::Run design =
+      run_feedflow("design cases/inclined_plane_29_5.toml --json -", dir);
+  ASSERT_EQ(design.exit_code, 0) << design.err;
+  const auto d = nlohmann::json::parse(design.out);
+  const auto& h = d["results"]["stopping_thickness"];
+  EXPECT_NEAR(h["value"].get<double>(), plane_deposit(29.5), 1e-6 * plane_deposit(29.5));
+  EXPECT_NE(h["model"].get<std::string>().find("calibrated against L2 CEL-FEM"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// Deposits thicker at the steeper inclination (as the continuum's: 63 mm at 29.5 deg, 74 mm at
+// 37 deg) admit no Pouliquen law: exit 4 naming why, and the material file as it was.
+TEST(CalibrateCommand, DepositsThatThickenWithTheSlopeAreNotWritten) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_chute", true);
+  lay_down_plane_runs(dir, {29.5, 37}, {},
+                      [](double deg, double) { return deg < 30 ? 0.063 : 0.074; });
+  const std::string before = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against cel --case cases/inclined_plane_29_5.toml --out c", dir);
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.err.find("do not thin"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(dir / "cases" / "materials" / "loblolly_pine.toml"), before);
+  fs::remove_all(dir);
+}
+
 // Bad input is exit 2 naming the flag, before any run: a list without a unit, too coarse a CEL
 // level, levels that do not double, a held-out point without '@', one fitted point.
 TEST(CalibrateCommand, BadInputIsRefusedByFlag) {
@@ -226,6 +312,9 @@ TEST(CalibrateCommand, BadInputIsRefusedByFlag) {
       {"--cells-across 3,5", "--cells-across"},
       {"--held-out \"45 mm\"", "--held-out"},
       {"--outlet-widths \"60 mm\" --semi-angles \"30 deg\"", "--outlet-widths"},
+      {"--case cases/inclined_plane_29_5.toml --angles \"33 deg\"", "--angles"},
+      {"--case cases/inclined_plane_29_5.toml --angles \"33 mm,35 deg\"", "--angles"},
+      {"--case cases/inclined_plane_29_5.toml --finest-cell 20mm", "--finest-cell"},
   };
   for (const auto& [flags, flag] : cases) {
     const feedflow::testing::Run r = run_feedflow(std::string("calibrate loblolly_pine --against cel --out c ") + flags, dir);

@@ -1,0 +1,262 @@
+// The chute's stopping-thickness calibration (designer/calibrate/stop_law_fit,
+// chute_calibration_design, calibration_toml; designer/case/calibration_reader;
+// designer/design/chute_check): the fit recovers the law that made its data, refuses deposits no
+// Pouliquen law holds, a CEL level that cannot resolve the deposit it finds leaves the reference,
+// the [calibration.chute] table round-trips beside the others, and the chute check uses it and
+// says so.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pine_material.hpp"
+
+#include "designer/bench/bench_run.hpp"
+#include "designer/calibrate/calibration_toml.hpp"
+#include "designer/calibrate/chute_calibration_design.hpp"
+#include "designer/calibrate/stop_law_fit.hpp"
+#include "designer/case/case_loader.hpp"
+#include "designer/design/chute_check.hpp"
+#include "designer/design/design_check.hpp"
+#include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
+
+namespace feedflow {
+namespace {
+
+using testing::pine_text;
+
+Material read(const std::string& text) { return testing::read_material_text(text); }
+
+// Pouliquen's h_stop with the pine's theta1 (27 deg).
+double h_stop(double theta2, double length, double angle) {
+  const double t1 = std::tan(27 * kDegree);
+  return length * (std::tan(theta2) - std::tan(angle)) / (std::tan(angle) - t1);
+}
+
+std::vector<StopObservation> made_by(double theta2, double length,
+                                     const std::vector<double>& fitted,
+                                     const std::vector<double>& held_out) {
+  std::vector<StopObservation> out;
+  for (double deg : fitted)
+    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree), 1e-3, false});
+  for (double deg : held_out)
+    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree), 1e-3, true});
+  return out;
+}
+
+ChuteCalibration example(double theta2, double length) {
+  ChuteCalibration c;
+  c.against = "dem";
+  c.rung = "L3 DEM, the seed's law on the plane";
+  c.scene = "inclined_plane_29_5";
+  c.lowest_angle = 29.5 * kDegree;
+  c.highest_angle = 37 * kDegree;
+  c.commit = "0123456789";
+  c.date = "2026-12-07";
+  c.law.coefficients = {{"theta2", theta2}, {"stop_length", length}};
+  c.law.figures = {{"fit_rms_error", "3 %"}, {"held_out_max_error", "8 %"}};
+  c.points = 3;
+  return c;
+}
+
+// Deposits a law of theta2 = 45 deg and L = 25 mm made at 29.5, 33 and 37 deg: the fit returns
+// both from the pine's published 40 deg and 10 mm, and meets the held-out 31 deg.
+TEST(StopLawFit, RecoversTheLawThatMadeItsData) {
+  const auto obs = made_by(45 * kDegree, 25e-3, {29.5, 33, 37}, {31});
+  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  ASSERT_TRUE(f.failure.empty()) << f.failure;
+  EXPECT_NEAR(in_degrees(f.theta2_after), 45.0, 1e-4);
+  EXPECT_NEAR(f.length_after * 1e3, 25.0, 1e-3);
+  EXPECT_DOUBLE_EQ(in_degrees(f.theta1), 27.0);  // held
+  EXPECT_LT(f.held_out_max_after, 1e-5);
+  EXPECT_GT(f.fit_rms_before, 0.3);            // the published law was far off
+  EXPECT_TRUE(std::isfinite(f.theta2_error));  // three points, two coefficients: a spare one
+  for (bool holds : f.band_holds_after) EXPECT_TRUE(holds);
+}
+
+// Two inclinations determine the law exactly (the inversion of reduced_models.md 3.5): no spare
+// point, so no standard error.
+TEST(StopLawFit, TwoInclinationsInvertTheLawExactly) {
+  const auto obs = made_by(42 * kDegree, 15e-3, {29.5, 37}, {});
+  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  ASSERT_TRUE(f.failure.empty()) << f.failure;
+  EXPECT_NEAR(in_degrees(f.theta2_after), 42.0, 1e-4);
+  EXPECT_NEAR(f.length_after * 1e3, 15.0, 1e-3);
+  EXPECT_LT(f.fit_rms_after, 1e-6);
+  EXPECT_FALSE(std::isfinite(f.theta2_error));
+}
+
+// A deposit thicker at the steeper inclination (the continuum's 63 mm at 29.5 deg and 74 mm at
+// 37 deg), one thinning too slowly for any theta2 below 89 deg, and one below theta1: each is
+// refused with its reason and the law kept as published.
+TEST(StopLawFit, DepositsNoPouliquenLawHoldsAreRefused) {
+  const Material pine = read(pine_text());
+  const StopLawFit rising = fit_stop_law(
+      {{29.5 * kDegree, 63e-3, 5e-3, false}, {37 * kDegree, 74e-3, 5e-3, false}}, pine);
+  EXPECT_NE(rising.failure.find("do not thin"), std::string::npos) << rising.failure;
+  EXPECT_DOUBLE_EQ(rising.theta2_after, rising.theta2_before);
+  EXPECT_DOUBLE_EQ(rising.length_after, rising.length_before);
+  // tan-ratio limit at theta2 -> 90 deg: h(29.5)/h(37) -> 4.34; 2 is slower than any law.
+  const StopLawFit slow = fit_stop_law(
+      {{29.5 * kDegree, 60e-3, 1e-3, false}, {37 * kDegree, 30e-3, 1e-3, false}}, pine);
+  EXPECT_NE(slow.failure.find("89 deg"), std::string::npos) << slow.failure;
+  const StopLawFit below =
+      fit_stop_law({{25 * kDegree, 90e-3, 1e-3, false}, {37 * kDegree, 30e-3, 1e-3, false}}, pine);
+  EXPECT_NE(below.failure.find("at or below theta1"), std::string::npos) << below.failure;
+}
+
+// Written beside a drum calibration and read back: theta2 in degrees and L in millimetres in
+// the file; the drum's part untouched; a second chute calibration replaces the first.
+TEST(ChuteCalibrationToml, RoundTripsBesideTheDrumsCalibration) {
+  DrumCalibration drum;
+  drum.against = "cel";
+  drum.rung = "L2";
+  drum.scene = "rotating_drum_20rpm";
+  drum.commit = "abc";
+  drum.date = "2026-12-06";
+  drum.layer.coefficients = {{"layer_fraction", 0.3}, {"friction_shift", 0.0}};
+  const std::string with_drum =
+      with_calibration(pine_text(), drum_calibration_toml(drum, {}), CalibrationPart::drum);
+  const std::vector<ChutePointRecord> points = {{29.5 * kDegree, 48e-3, 4e-3, false, "DEM"}};
+  const std::string both =
+      with_calibration(with_drum, chute_calibration_toml(example(43.5 * kDegree, 0.0125), points),
+                       CalibrationPart::chute);
+  EXPECT_NE(both.find("theta2 = \"43.5 deg\""), std::string::npos) << both;
+  EXPECT_NE(both.find("stop_length = \"12.5 mm\""), std::string::npos) << both;
+  const Material m = read(both);
+  ASSERT_TRUE(m.calibration && m.calibration->chute && m.calibration->drum);
+  EXPECT_NEAR(m.calibration->chute->law.coefficients.at("theta2"), 43.5 * kDegree, 1e-15);
+  EXPECT_NEAR(m.calibration->chute->law.coefficients.at("stop_length"), 0.0125, 1e-15);
+  EXPECT_NEAR(m.calibration->chute->highest_angle, 37 * kDegree, 1e-15);
+  EXPECT_EQ(m.calibration->chute->points, 1u);
+  EXPECT_DOUBLE_EQ(m.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
+  const Material again = read(with_calibration(
+      both, chute_calibration_toml(example(41 * kDegree, 0.02), {}), CalibrationPart::chute));
+  EXPECT_NEAR(again.calibration->chute->law.coefficients.at("theta2"), 41 * kDegree, 1e-15);
+  EXPECT_EQ(again.calibration->chute->points, 0u);
+  EXPECT_DOUBLE_EQ(again.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
+}
+
+// theta2 outside (0, 90) deg, L not a length or not above 0, an inverted angle range: refused
+// naming the key; a theta2 not above the material's theta1 is refused when the chute check uses it.
+TEST(ChuteCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
+  const auto key_of = [](const std::string& table) {
+    try {
+      const Material m = read(pine_text() + "\n" + table);
+      (void)chute_material(m);
+    } catch (const InputError& e) {
+      return e.key();
+    }
+    return std::string("accepted");
+  };
+  const std::string good = chute_calibration_toml(example(43.5 * kDegree, 0.0125), {});
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    s.replace(s.find(from), from.size(), to);
+    return s;
+  };
+  EXPECT_EQ(key_of(good), "accepted");
+  EXPECT_EQ(key_of(replaced("\"43.5 deg\"", "\"95 deg\"")),
+            "calibration.chute.coefficients.theta2");
+  EXPECT_EQ(key_of(replaced("\"43.5 deg\"", "\"20 deg\"")),
+            "calibration.chute.coefficients.theta2");
+  EXPECT_EQ(key_of(replaced("\"12.5 mm\"", "\"12.5 deg\"")),
+            "calibration.chute.coefficients.stop_length");
+  EXPECT_EQ(key_of(replaced("\"12.5 mm\"", "\"0 mm\"")),
+            "calibration.chute.coefficients.stop_length");
+  EXPECT_EQ(key_of(replaced("highest_angle = \"37 deg\"", "highest_angle = \"20 deg\"")),
+            "calibration.chute.highest_angle");
+}
+
+// The seed plane at 29.5 deg: the calibrated law gives its h_stop (45 deg, 25 mm), the model
+// text and the assumptions name the calibration, the band holds +-8 % (its largest error), and
+// a chute at 40 deg, beyond the calibrated 29.5-37 deg, says it is extrapolated.
+TEST(ChuteCalibration, DesignUsesTheCalibrationAndSaysSo) {
+  Case c = load_case("cases/inclined_plane_29_5.toml");
+  c.material = read(pine_text());
+  const DesignRecord before = design_check(c);
+  c.material =
+      read(with_calibration(pine_text(), chute_calibration_toml(example(45 * kDegree, 0.025), {}),
+                            CalibrationPart::chute));
+  const DesignRecord after = design_check(c);
+  const Estimate& h0 = *find_estimate(before.results, "stopping_thickness");
+  const Estimate& h1 = *find_estimate(after.results, "stopping_thickness");
+  const double expected = h_stop(45 * kDegree, 0.025, 29.5 * kDegree);
+  EXPECT_NEAR(std::get<double>(h1.value), expected, 1e-12);
+  EXPECT_GT(std::get<double>(h1.value), 2 * std::get<double>(h0.value));
+  EXPECT_NE(h1.model.find("calibrated against L3 DEM"), std::string::npos) << h1.model;
+  EXPECT_LE(*h1.low, 0.92 * expected + 1e-12);
+  EXPECT_GE(*h1.high, 1.08 * expected - 1e-12);
+  const auto said = [](const DesignRecord& r, const char* what) {
+    for (const auto& a : r.assumptions)
+      if (a.find(what) != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(said(after, "[calibration.chute]"));
+  EXPECT_FALSE(said(after, "extrapolated"));
+  EXPECT_TRUE(said(before, "assumed calibration targets"));
+  std::get<Chute>(c.equipment).angle = 40 * kDegree;
+  EXPECT_TRUE(said(design_check(c), "extrapolated"));
+}
+
+// A design point is a bench deposit question at its inclination on the design's case: the CEL
+// refinement series down to the finest cell (no variants), all in the reference until their
+// runs show what they resolve; or the DEM reference alone.
+TEST(ChuteCalibrationDesign, EachPointIsABenchDepositQuestion) {
+  ChuteCalibrationDesign d;
+  d.case_file = "cases/inclined_plane_29_5.toml";
+  d.points = inclination_points({29.5 * kDegree, 33 * kDegree}, {31 * kDegree});
+  d.finest_cell = 10e-3;
+  d.check();
+  const BenchQuestion q = chute_point_question(d, d.points[1]);
+  EXPECT_EQ(q.id, "chute_deposit_33deg");
+  EXPECT_EQ(q.sets, std::vector<std::string>{"chute.angle=33deg"});
+  ASSERT_EQ(q.points.size(), 2u);
+  for (const auto& p : q.points) {
+    EXPECT_EQ(p.role, ReferenceRole::cel_refinement);
+    EXPECT_EQ(p.rest_key, "at_rest");
+  }
+  d.against = "dem";
+  const BenchQuestion dem = chute_point_question(d, d.points[0]);
+  ASSERT_EQ(dem.points.size(), 1u);
+  EXPECT_EQ(dem.points[0].role, ReferenceRole::dem_reference);
+  // One fitted inclination, or one given twice, is refused by flag.
+  d.points = inclination_points({29.5 * kDegree}, {31 * kDegree});
+  EXPECT_THROW(d.check(), InputError);
+  d.points = inclination_points({29.5 * kDegree, 33 * kDegree}, {33 * kDegree});
+  EXPECT_THROW(d.check(), InputError);
+}
+
+// Runs of 20, 10 and 5 mm at rest with deposits of 45, 50 and 52 mm: the 20 mm level has 2.25
+// cells across its own deposit and leaves the reference; two levels are left. With the 10 mm
+// level at 25 mm (2.5 cells) one is left, and the point says it needs a finer level.
+TEST(ChuteCalibrationDesign, ALevelThatCannotResolveItsDepositLeavesTheReference) {
+  ChuteCalibrationDesign d;
+  d.case_file = "cases/inclined_plane_29_5.toml";
+  d.points = inclination_points({29.5 * kDegree, 33 * kDegree}, {});
+  d.finest_cell = 5e-3;
+  const auto runs_with = [&](const BenchQuestion& q, std::map<double, double> deposit_mm) {
+    std::map<std::string, BenchRun> runs;
+    for (const auto& p : q.points) {
+      BenchRun r;
+      r.results = {{"deposit_thickness_mid_ramp",
+                    {{"value", deposit_mm.at(*p.cell_size) * 1e-3}, {"unit", "m"}}},
+                   {"at_rest", {{"value", "yes"}}}};
+      runs[point_id(p)] = r;
+    }
+    return runs;
+  };
+  BenchQuestion q = chute_point_question(d, d.points[0]);
+  ASSERT_EQ(q.points.size(), 3u);
+  EXPECT_EQ(keep_resolving_levels(q, runs_with(q, {{0.02, 45}, {0.01, 50}, {0.005, 52}})), "");
+  for (const auto& p : q.points)
+    EXPECT_EQ(p.role, *p.cell_size > 0.015 ? ReferenceRole::none : ReferenceRole::cel_refinement);
+  BenchQuestion thin = chute_point_question(d, d.points[0]);
+  const std::string why =
+      keep_resolving_levels(thin, runs_with(thin, {{0.02, 45}, {0.01, 25}, {0.005, 26}}));
+  EXPECT_NE(why.find("on 1 CEL level(s)"), std::string::npos) << why;
+  EXPECT_NE(why.find("finer --finest-cell"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace feedflow
