@@ -39,12 +39,8 @@ ArchingCalibration arching_calibration_table(const ArchingCalibrationOutcome& o,
   for (const auto& f : o.fit) {
     CalibratedModel m;
     m.coefficients["strength_scale"] = f.scale;
-    m.figures["fit_rms_error_before"] = percent(f.fit_rms_before);
-    m.figures["fit_rms_error"] = percent(f.fit_rms_after);
-    if (any_held_out) {
-      m.figures["held_out_max_error_before"] = percent(f.held_out_max_before);
-      m.figures["held_out_max_error"] = percent(f.held_out_max_after);
-    }
+    set_error_figures(m, {f.fit_rms_before, f.held_out_max_before},
+                      {f.fit_rms_after, f.held_out_max_after}, any_held_out);
     m.figures["scale_range"] = range_text(f);
     m.figures["brackets_held"] = std::to_string(f.held_before) + " -> " +
                                  std::to_string(f.held_after) + " of " +

@@ -65,12 +65,8 @@ Calibration calibration_table(const CalibrationOutcome& o, const std::string& sc
     if (!row.failure.empty()) continue;
     CalibratedModel m;
     for (std::size_t i = 0; i < row.after.size(); ++i) m.coefficients[std::string(row.row->coefficients[i].name)] = row.after[i];
-    m.figures["fit_rms_error_before"] = percent(row.fit_rms_before);
-    m.figures["fit_rms_error"] = percent(row.fit_rms_after);
-    if (held_out) {
-      m.figures["held_out_max_error_before"] = percent(row.held_out_max_before);
-      m.figures["held_out_max_error"] = percent(row.held_out_max_after);
-    }
+    set_error_figures(m, {row.fit_rms_before, row.held_out_max_before},
+                      {row.fit_rms_after, row.held_out_max_after}, held_out);
     for (std::size_t k = 0; k < row.held.size(); ++k) m.figures["held_" + std::to_string(k + 1)] = row.held[k];
     c.discharge[std::string(row.row->name)] = std::move(m);
   }
@@ -100,6 +96,19 @@ nlohmann::ordered_json calibration_json_head(const std::string& material,
           {"runs_read_back", runs_read_back}};
 }
 
+nlohmann::ordered_json point_json(nlohmann::ordered_json setting, bool held_out,
+                                  const CalibrationPoint& point) {
+  setting["held_out"] = held_out;
+  setting["status"] = point.status;
+  const BenchReference& r = point.reference;
+  if (r.value)
+    setting["reference"] = {{"value", *r.value},
+                            {"error_bar", r.error_bar.value_or(0.0)},
+                            {"unit", r.unit},
+                            {"source", r.source}};
+  return setting;
+}
+
 nlohmann::ordered_json calibration_json(const CalibrationOutcome& o, const Calibration& table) {
   nlohmann::ordered_json j =
       calibration_json_head(o.material, table.against, table.rung, table.commit, table.date,
@@ -107,14 +116,9 @@ nlohmann::ordered_json calibration_json(const CalibrationOutcome& o, const Calib
   auto& jp = j["points"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     const DesignPoint& d = o.design.points[i];
-    nlohmann::ordered_json p{{"outlet_width", {{"value", d.outlet_width}, {"unit", "m"}}},
-                             {"semi_angle", {{"value", d.semi_angle}, {"unit", "rad"}}},
-                             {"held_out", d.held_out},
-                             {"status", o.points[i].status}};
-    const BenchReference& r = o.points[i].reference;
-    if (r.value)
-      p["reference"] = {{"value", *r.value}, {"error_bar", r.error_bar.value_or(0.0)}, {"unit", "kg/s"}, {"source", r.source}};
-    jp.push_back(p);
+    jp.push_back(point_json({{"outlet_width", {{"value", d.outlet_width}, {"unit", "m"}}},
+                             {"semi_angle", {{"value", d.semi_angle}, {"unit", "rad"}}}},
+                            d.held_out, o.points[i]));
   }
   auto& jr = j["models"] = nlohmann::ordered_json::array();
   for (const auto& row : o.fit.rows)

@@ -53,6 +53,11 @@ nlohmann::ordered_json calibration_json_head(const std::string& material,
                                              const std::string& against, const std::string& rung,
                                              const std::string& commit, const std::string& date,
                                              std::size_t runs_made, std::size_t runs_read_back);
+// One design point in calibration.json: its `setting` (the varied quantities with units), whether
+// it was held out, its status and its reference.
+nlohmann::ordered_json point_json(nlohmann::ordered_json setting, bool held_out,
+                                  const CalibrationPoint& point);
+
 std::string calibration_summary(const CalibrationOutcome& outcome, const Calibration& table);
 
 }  // namespace feedflow

@@ -69,16 +69,8 @@ nlohmann::ordered_json chute_calibration_json(const ChuteCalibrationOutcome& o,
   auto& jp = j["points"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     const ChuteDesignPoint& d = o.design.points[i];
-    nlohmann::ordered_json p{{"angle", {{"value", d.angle}, {"unit", "rad"}}},
-                             {"held_out", d.held_out},
-                             {"status", o.points[i].status}};
-    const BenchReference& r = o.points[i].reference;
-    if (r.value)
-      p["reference"] = {{"value", *r.value},
-                        {"error_bar", r.error_bar.value_or(0.0)},
-                        {"unit", r.unit},
-                        {"source", r.source}};
-    jp.push_back(p);
+    jp.push_back(
+        point_json({{"angle", {{"value", d.angle}, {"unit", "rad"}}}}, d.held_out, o.points[i]));
   }
   const StopLawFit& f = o.fit;
   const auto finite_or_null = [](double x) {

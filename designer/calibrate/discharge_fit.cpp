@@ -182,4 +182,13 @@ DischargeFit fit_discharge(const std::vector<DischargeObservation>& obs, HopperM
   return out;
 }
 
+void set_error_figures(CalibratedModel& m, const FitErrors& before, const FitErrors& after,
+                       bool held_out) {
+  m.figures["fit_rms_error_before"] = percent(before.fit_rms);
+  m.figures["fit_rms_error"] = percent(after.fit_rms);
+  if (!held_out) return;
+  m.figures["held_out_max_error_before"] = percent(before.held_out_max);
+  m.figures["held_out_max_error"] = percent(after.held_out_max);
+}
+
 }  // namespace feedflow

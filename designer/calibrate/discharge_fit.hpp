@@ -65,4 +65,9 @@ struct FitErrors {
 FitErrors fit_errors(const std::vector<double>& values, const std::vector<double>& references,
                      const std::vector<bool>& held_out);
 
+// A fit's errors as a calibrated model's figures: fit_rms_error (and _before) and, when points
+// were held out, held_out_max_error (and _before).
+void set_error_figures(CalibratedModel& m, const FitErrors& before, const FitErrors& after,
+                       bool held_out);
+
 }  // namespace feedflow

@@ -74,16 +74,8 @@ nlohmann::ordered_json drum_calibration_json(const DrumCalibrationOutcome& o,
   auto& jp = j["points"] = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     const DrumDesignPoint& d = o.design.points[i];
-    nlohmann::ordered_json p{{"speed", {{"value", d.speed}, {"unit", "rad/s"}}},
-                             {"held_out", d.held_out},
-                             {"status", o.points[i].status}};
-    const BenchReference& r = o.points[i].reference;
-    if (r.value)
-      p["reference"] = {{"value", *r.value},
-                        {"error_bar", r.error_bar.value_or(0.0)},
-                        {"unit", r.unit},
-                        {"source", r.source}};
-    jp.push_back(p);
+    jp.push_back(
+        point_json({{"speed", {{"value", d.speed}, {"unit", "rad/s"}}}}, d.held_out, o.points[i]));
   }
   const DrumLayerFit& f = o.fit;
   j["flowing_layer"] = {

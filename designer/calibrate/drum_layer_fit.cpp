@@ -127,12 +127,9 @@ DrumLayerFit fit_drum_layer(const std::vector<DrumObservation>& obs, Material m,
 
   f.layer.coefficients = {{"layer_fraction", f.layer_fraction_after},
                           {"friction_shift", f.shift_after}};
-  f.layer.figures["fit_rms_error_before"] = percent(f.fit_rms_before);
-  f.layer.figures["fit_rms_error"] = percent(f.fit_rms_after);
-  if (std::any_of(obs.begin(), obs.end(), [](const DrumObservation& o) { return o.held_out; })) {
-    f.layer.figures["held_out_max_error_before"] = percent(f.held_out_max_before);
-    f.layer.figures["held_out_max_error"] = percent(f.held_out_max_after);
-  }
+  set_error_figures(
+      f.layer, before, after,
+      std::any_of(obs.begin(), obs.end(), [](const DrumObservation& o) { return o.held_out; }));
   if (!f.held.empty()) f.layer.figures["held_1"] = f.held;
   // The band after: the design check's with the calibration's figures (widened by its error).
   calibrated.calibration->drum->layer = f.layer;

@@ -155,12 +155,9 @@ StopLawFit fit_stop_law(const std::vector<StopObservation>& obs, Material m) {
   f.held_out_max_after = after.held_out_max;
 
   f.law.coefficients = {{"theta2", f.theta2_after}, {"stop_length", f.length_after}};
-  f.law.figures["fit_rms_error_before"] = percent(f.fit_rms_before);
-  f.law.figures["fit_rms_error"] = percent(f.fit_rms_after);
-  if (std::any_of(obs.begin(), obs.end(), [](const StopObservation& o) { return o.held_out; })) {
-    f.law.figures["held_out_max_error_before"] = percent(f.held_out_max_before);
-    f.law.figures["held_out_max_error"] = percent(f.held_out_max_after);
-  }
+  set_error_figures(
+      f.law, before, after,
+      std::any_of(obs.begin(), obs.end(), [](const StopObservation& o) { return o.held_out; }));
   // The band after: the check's with the calibration's figures (widened by its error).
   calibrated.calibration->chute->law = f.law;
   design_figures(obs, calibrated, f.thickness_after, f.band_holds_after);

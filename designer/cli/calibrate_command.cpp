@@ -99,6 +99,35 @@ std::vector<DesignPoint> held_out_points(const std::string& text) {
   return out;
 }
 
+// The material being calibrated, from the case's folder's library.
+Material calibrated_material(const CalibrateArguments& args) {
+  return MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
+      .load(args.material);
+}
+
+// --held-out as a list of `d` (empty: `fallback`; "none": nothing).
+std::vector<double> held_out_list(const CalibrateArguments& args, const Dimension& d,
+                                  const char* fallback = "") {
+  const std::string text = args.held_out.empty() ? fallback : args.held_out;
+  if (text.empty() || text == "none") return {};
+  return quantity_list(text, d, "--held-out");
+}
+
+// --list: every point's run as a command line.
+void list_runs(const std::vector<CalibrationPoint>& points) {
+  for (const auto& p : points)
+    for (const auto& bp : p.question.points) std::cout << bench_invocation(p.question, bp) << '\n';
+}
+
+// Throws NumericalFailure unless at least two fitted points (`what`: "point(s) have a reference
+// rate") have a reference.
+void require_two_fitted(std::ptrdiff_t fitted, const std::string& what,
+                        const std::filesystem::path& out) {
+  if (fitted < 2)
+    throw NumericalFailure("calibration: only " + std::to_string(fitted) + " fitted " + what +
+                           "; see the runs in " + (out / "runs").string());
+}
+
 CalibrationDesign design_of(const CalibrateArguments& args) {
   CalibrationDesign d;
   d.case_file = args.case_file;
@@ -254,13 +283,11 @@ int run_hopper_calibration(const CalibrateArguments& args,
                            std::chrono::steady_clock::time_point start) {
   CalibrationOutcome o;
   o.design = design_of(args);
-  const Material material =
-      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path()).load(args.material);
+  const Material material = calibrated_material(args);
   o.material = material.name;
   for (const auto& p : o.design.points) o.points.push_back({design_point_question(o.design, p), {}, "done"});
   if (args.list) {
-    for (const auto& p : o.points)
-      for (const auto& bp : p.question.points) std::cout << bench_invocation(p.question, bp) << '\n';
+    list_runs(o.points);
     return kExitOk;
   }
   const std::vector<Case> cases = point_cases(o);
@@ -275,9 +302,7 @@ int run_hopper_calibration(const CalibrateArguments& args,
   }
   const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
                                     [](const DischargeObservation& x) { return !x.held_out; });
-  if (fitted < 2)
-    throw NumericalFailure("calibration: only " + std::to_string(fitted) +
-                           " fitted point(s) have a reference rate; see the runs in " + (out / "runs").string());
+  require_two_fitted(fitted, "point(s) have a reference rate", out);
   // The reduced models are evaluated with the material the runs used: the case's.
   const HopperDensityModel& density = hopper_density_models().default_row();
   o.fit = fit_discharge(o.observations, HopperMaterial::of(cases.front().material, density));
@@ -310,10 +335,7 @@ DrumCalibrationDesign drum_design_of(const CalibrateArguments& args, const Case&
   if (drum_case.material.name != material.name) d.material = args.material;
   d.against = args.against;
   d.points = speed_points(quantity_list(args.speeds, dim::angular_speed, "--speeds"),
-                          args.held_out == "none"
-                              ? std::vector<double>{}
-                              : quantity_list(args.held_out.empty() ? kDrumHeldOut : args.held_out,
-                                              dim::angular_speed, "--held-out"));
+                          held_out_list(args, dim::angular_speed, kDrumHeldOut));
   d.finest_cell = finest_cell(args, "5mm");
   d.check();
   return d;
@@ -346,9 +368,7 @@ std::vector<Case> drum_point_cases(const DrumCalibrationOutcome& o) {
 
 int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
                          std::chrono::steady_clock::time_point start) {
-  const Material material =
-      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
-          .load(args.material);
+  const Material material = calibrated_material(args);
   DrumCalibrationOutcome o;
   o.design = drum_design_of(args, drum_case, material);
   o.material = material.name;
@@ -356,9 +376,7 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
     o.points.push_back({drum_point_question(o.design, p), {}, "done"});
   const std::vector<Case> cases = drum_point_cases(o);
   if (args.list) {
-    for (const auto& p : o.points)
-      for (const auto& bp : p.question.points)
-        std::cout << bench_invocation(p.question, bp) << '\n';
+    list_runs(o.points);
     return kExitOk;
   }
   const std::filesystem::path out = output_folder(args, material);
@@ -374,10 +392,7 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
   }
   const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
                                     [](const DrumObservation& x) { return !x.held_out; });
-  if (fitted < 2)
-    throw NumericalFailure("calibration: only " + std::to_string(fitted) +
-                           " fitted speed(s) have a reference angle; see the runs in " +
-                           (out / "runs").string());
+  require_two_fitted(fitted, "speed(s) have a reference angle", out);
   o.fit = fit_drum_layer(o.observations, cases.front().material, o.design.against == "dem");
   // A layer that could not be fitted is not written: the material keeps what it had.
   if (!o.fit.failure.empty())
@@ -401,16 +416,12 @@ int run_drum_calibration(const CalibrateArguments& args, const Case& drum_case,
 // --verify dem --width-tolerance`).
 int run_arching_calibration(const CalibrateArguments& args, const Case& hopper_case,
                             std::chrono::steady_clock::time_point start) {
-  const Material material =
-      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
-          .load(args.material);
+  const Material material = calibrated_material(args);
   if (hopper_case.material.name != material.name)
     throw InputError("--case", args.case_file,
                      "a hopper case of " + material.name + " (its material is " +
                          hopper_case.material.name + ")");
-  const std::vector<double> held_out = args.held_out.empty() || args.held_out == "none"
-                                           ? std::vector<double>{}
-                                           : quantity_list(args.held_out, dim::angle, "--held-out");
+  const std::vector<double> held_out = held_out_list(args, dim::angle);
   ArchingCalibrationOutcome o;
   o.material = material.name;
   o.against = args.against;
@@ -460,9 +471,7 @@ ChuteCalibrationDesign chute_design_of(const CalibrateArguments& args, const Cas
   if (plane_case.material.name != material.name) d.material = args.material;
   d.against = args.against;
   d.points = inclination_points(quantity_list(args.angles, dim::angle, "--angles"),
-                                args.held_out.empty() || args.held_out == "none"
-                                    ? std::vector<double>{}
-                                    : quantity_list(args.held_out, dim::angle, "--held-out"));
+                                held_out_list(args, dim::angle));
   d.finest_cell = finest_cell(args, "10mm");
   d.check();
   return d;
@@ -472,9 +481,7 @@ ChuteCalibrationDesign chute_design_of(const CalibrateArguments& args, const Cas
 // plane's inclination.
 int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case,
                           std::chrono::steady_clock::time_point start) {
-  const Material material =
-      MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
-          .load(args.material);
+  const Material material = calibrated_material(args);
   if (!material.surface_flow)
     throw InputError(material.origin, "material.surface_flow",
                      "a chute calibration needs the material's [surface_flow] (theta1 is held)");
@@ -489,9 +496,7 @@ int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case
     (void)load_case(o.design.case_file, overrides);
   }
   if (args.list) {
-    for (const auto& p : o.points)
-      for (const auto& bp : p.question.points)
-        std::cout << bench_invocation(p.question, bp) << '\n';
+    list_runs(o.points);
     return kExitOk;
   }
   const std::filesystem::path out = output_folder(args, material);
@@ -507,10 +512,7 @@ int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case
   }
   const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
                                     [](const StopObservation& x) { return !x.held_out; });
-  if (fitted < 2)
-    throw NumericalFailure("calibration: only " + std::to_string(fitted) +
-                           " fitted inclination(s) have a reference deposit; see the runs in " +
-                           (out / "runs").string());
+  require_two_fitted(fitted, "inclination(s) have a reference deposit", out);
   o.fit = fit_stop_law(o.observations, material);
   // A law that could not be fitted is not written: the material keeps what it had.
   if (!o.fit.failure.empty())

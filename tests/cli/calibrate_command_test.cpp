@@ -73,6 +73,22 @@ double layer_angle(double rpm) {
 // The CEL runs of a calibration of the seed drum at `fitted` and `held_out` rpm on the 20 and
 // 10 mm levels, laid down below DIR/c/runs as the bench keeps them: each reads `angle(rpm, cell
 // size in m)` [deg] with a 0.1 deg interval.
+// Runs laid down as the bench keeps them below c/runs, each with `results(question, point)`.
+void lay_down_runs(const fs::path& dir, const std::vector<feedflow::BenchQuestion>& questions,
+                   const std::function<nlohmann::json(const feedflow::BenchQuestion&,
+                                                      const feedflow::BenchPoint&)>& results) {
+  for (const auto& q : questions)
+    for (const auto& p : q.points) {
+      feedflow::BenchRun run;
+      run.invocation = feedflow::bench_invocation(q, p);
+      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
+      run.wall_seconds = 1.0;
+      run.commit = "test";
+      run.results = results(q, p);
+      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
+    }
+}
+
 void lay_down_drum_runs(const fs::path& dir, const std::vector<double>& fitted,
                         const std::vector<double>& held_out,
                         const std::function<double(double, double)>& angle) {
@@ -83,21 +99,19 @@ void lay_down_drum_runs(const fs::path& dir, const std::vector<double>& fitted,
   for (double rpm : fitted) fitted_speeds.push_back(rpm * feedflow::kRpm);
   for (double rpm : held_out) held_speeds.push_back(rpm * feedflow::kRpm);
   d.points = feedflow::speed_points(fitted_speeds, held_speeds);
+  std::vector<feedflow::BenchQuestion> questions;
+  std::map<std::string, double> rpm_of;
   for (const auto& point : d.points) {
-    const feedflow::BenchQuestion q = feedflow::drum_point_question(d, point);
-    for (const auto& p : q.points) {
-      feedflow::BenchRun run;
-      run.invocation = feedflow::bench_invocation(q, p);
-      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
-      run.wall_seconds = 1.0;
-      run.commit = "test";
-      run.results = {
-          {"dynamic_angle_of_repose",
-           {{"value", angle(feedflow::in_rpm(point.speed), *p.cell_size)}, {"unit", "deg"}}},
-          {"dynamic_angle_of_repose_interval", {{"value", 0.1}, {"unit", "deg"}}}};
-      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
-    }
+    questions.push_back(feedflow::drum_point_question(d, point));
+    rpm_of[questions.back().id] = feedflow::in_rpm(point.speed);
   }
+  lay_down_runs(dir, questions,
+                [&](const feedflow::BenchQuestion& q, const feedflow::BenchPoint& p) {
+                  return nlohmann::json{
+                      {"dynamic_angle_of_repose",
+                       {{"value", angle(rpm_of.at(q.id), *p.cell_size)}, {"unit", "deg"}}},
+                      {"dynamic_angle_of_repose_interval", {{"value", 0.1}, {"unit", "deg"}}}};
+                });
 }
 
 // A drum calibration on CEL runs laid down as the bench keeps them (20 and 10 mm levels 1 and
@@ -236,21 +250,19 @@ void lay_down_plane_runs(const fs::path& dir, const std::vector<double>& fitted,
   for (double deg : fitted) fitted_angles.push_back(deg * feedflow::kDegree);
   for (double deg : held_out) held_angles.push_back(deg * feedflow::kDegree);
   d.points = feedflow::inclination_points(fitted_angles, held_angles);
+  std::vector<feedflow::BenchQuestion> questions;
+  std::map<std::string, double> degrees_of;
   for (const auto& point : d.points) {
-    const feedflow::BenchQuestion q = feedflow::chute_point_question(d, point);
-    for (const auto& p : q.points) {
-      feedflow::BenchRun run;
-      run.invocation = feedflow::bench_invocation(q, p);
-      run.inputs = feedflow::bench_inputs_fingerprint(q, p, dir);
-      run.wall_seconds = 1.0;
-      run.commit = "test";
-      run.results = {
-          {"deposit_thickness_mid_ramp",
-           {{"value", deposit(feedflow::in_degrees(point.angle), *p.cell_size)}, {"unit", "m"}}},
-          {"at_rest", {{"value", "yes"}}}};
-      feedflow::save_bench_run(feedflow::bench_run_folder(dir / "c" / "runs", q, p), run);
-    }
+    questions.push_back(feedflow::chute_point_question(d, point));
+    degrees_of[questions.back().id] = feedflow::in_degrees(point.angle);
   }
+  lay_down_runs(dir, questions,
+                [&](const feedflow::BenchQuestion& q, const feedflow::BenchPoint& p) {
+                  return nlohmann::json{
+                      {"deposit_thickness_mid_ramp",
+                       {{"value", deposit(degrees_of.at(q.id), *p.cell_size)}, {"unit", "m"}}},
+                      {"at_rest", {{"value", "yes"}}}};
+                });
 }
 
 // A chute calibration on CEL plane runs (20 and 10 mm levels 4 and 2 % above the deposits of a
