@@ -76,7 +76,8 @@ TEST_F(SimulateConeCel, PilotConeDischargesOnTheAxisymmetricGrid) {
 // deg). Measured wall/centre speed ratios: 0.69 at 20, 0.39 at 30, 0.14 at 40, 0.006 at 45 deg.
 // This holds on 10 mm cells only: the wall zone slows as the cells shrink (20 deg: 0.71 at 5 mm,
 // 0.38 at 2.5 mm; 30 deg: 0.23, 0.079, and funnel flow at 1.25 mm with 0.019; 40 deg: 0.019,
-// 0.007; with cut cells at the wall too: 30 deg 0.148, 0.278, 0.081 at 10, 5, 2.5 mm), which is
+// 0.007; with cut cells at the wall too: 30 deg 0.148, 0.278, 0.081 at 10, 5, 2.5 mm and funnel
+// flow at 1.25 mm with 0.084, a 30 and a 38.75 mm band on 2.5 and 1.25 mm cells), which is
 // why design --verify does not use the pattern. LONG (half a minute; the pilot cone's discharge
 // above is its fast counterpart).
 TEST_F(SimulateConeCel, LONG_MassAndFunnelFlowOnEitherSideOfTheConicalLimit) {
