@@ -68,7 +68,7 @@ BenchQuestion chute_point_question(const ChuteCalibrationDesign& d, const ChuteD
 
 std::string keep_resolving_levels(BenchQuestion& q, const std::map<std::string, BenchRun>& runs) {
   const BenchQuestionTable table = tabulate(q, runs);
-  std::size_t levels = 0, kept = 0;
+  std::size_t levels = 0, kept = 0, still_flowing = 0;
   std::string dropped;
   for (std::size_t i = 0; i < q.points.size(); ++i) {
     BenchPoint& p = q.points[i];
@@ -76,6 +76,10 @@ std::string keep_resolving_levels(BenchQuestion& q, const std::map<std::string, 
     ++levels;
     const BenchAnswer& a = table.answers[i];
     if (!a.value) continue;  // not run, or no answer: the reference has no use for it anyway
+    if (a.at_rest && !*a.at_rest) {  // an upper bound: out of the reference anyway
+      ++still_flowing;
+      continue;
+    }
     double deposit = *a.value;
     try {
       deposit *= parse_quantity_as("1 " + a.unit, dim::length, false);
@@ -93,8 +97,10 @@ std::string keep_resolving_levels(BenchQuestion& q, const std::map<std::string, 
   }
   if (levels == 0 || kept >= 2) return {};
   return "the deposit is resolved (" + format_number(kReferenceCellsAcross, 2) +
-         " cells across) on " + std::to_string(kept) + " CEL level(s)" +
-         (dropped.empty() ? "" : " (" + dropped + ")") + ": a finer --finest-cell";
+         " cells across) on " + std::to_string(kept) + " CEL level(s) at rest" +
+         (dropped.empty() ? "" : " (" + dropped + ")") +
+         (still_flowing ? ", " + std::to_string(still_flowing) + " still flowing at the end" : "") +
+         ": a finer --finest-cell" + (still_flowing ? " or a longer run" : "");
 }
 
 }  // namespace feedflow

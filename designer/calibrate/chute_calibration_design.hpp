@@ -47,8 +47,8 @@ BenchQuestion chute_point_question(const ChuteCalibrationDesign& design,
 
 // Takes out of the reference every CEL level whose own deposit (in `runs`, by point_id) has
 // fewer than kReferenceCellsAcross cells across it (it cannot resolve what it answers), and
-// returns why the point has no reference when fewer than two levels are left of a CEL series;
-// empty otherwise (and for DEM).
+// returns why the point has no reference when fewer than two levels at rest are left of a CEL
+// series; empty otherwise (and for DEM).
 std::string keep_resolving_levels(BenchQuestion& question,
                                   const std::map<std::string, BenchRun>& runs);
 

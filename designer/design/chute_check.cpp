@@ -76,9 +76,13 @@ std::vector<std::string> chute_assumptions(const Chute& chute, const Material& m
                                            const StoppingThicknessModel& stop) {
   std::vector<std::string> out{
       "Stopping thickness: " + std::string(stop.summary) +
-          " with theta1, theta2 and L from the material; thicknesses are normal to the ramp.",
-      "The L1 release treats the bin as a reservoir feeding the gate (shallow-flow theory stretched in a bin as deep "
-      "as it is long) and a no-slip ramp; its second-order well-balanced scheme on 10 mm cells is within 2 % of the "
+          " with theta1, theta2 and L from the material" +
+          (m.calibration && m.calibration->chute ? " and its chute calibration (below)" : "") +
+          "; thicknesses are normal to the ramp.",
+      "The L1 release treats the bin as a reservoir feeding the gate (shallow-flow theory "
+      "stretched in a bin as deep "
+      "as it is long) and a no-slip ramp; its second-order well-balanced scheme on 10 mm cells is "
+      "within 2 % of the "
       "refined deposit."};
   if (m.calibration && m.calibration->chute) {
     const ChuteCalibration& c = *m.calibration->chute;

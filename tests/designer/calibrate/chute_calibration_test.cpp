@@ -229,19 +229,23 @@ TEST(ChuteCalibrationDesign, EachPointIsABenchDepositQuestion) {
 
 // Runs of 20, 10 and 5 mm at rest with deposits of 45, 50 and 52 mm: the 20 mm level has 2.25
 // cells across its own deposit and leaves the reference; two levels are left. With the 10 mm
-// level at 25 mm (2.5 cells) one is left, and the point says it needs a finer level.
+// level at 25 mm (2.5 cells), or the 5 mm level still flowing, one is left, and the point says
+// why it has no reference.
 TEST(ChuteCalibrationDesign, ALevelThatCannotResolveItsDepositLeavesTheReference) {
   ChuteCalibrationDesign d;
   d.case_file = "cases/inclined_plane_29_5.toml";
   d.points = inclination_points({29.5 * kDegree, 33 * kDegree}, {});
   d.finest_cell = 5e-3;
-  const auto runs_with = [&](const BenchQuestion& q, std::map<double, double> deposit_mm) {
+  // The runs' deposits by cell size; the level `flowing_cell` ended still flowing.
+  const auto runs_with = [&](const BenchQuestion& q, std::map<double, double> deposit_mm,
+                             double flowing_cell = 0.0) {
     std::map<std::string, BenchRun> runs;
     for (const auto& p : q.points) {
       BenchRun r;
-      r.results = {{"deposit_thickness_mid_ramp",
-                    {{"value", deposit_mm.at(*p.cell_size) * 1e-3}, {"unit", "m"}}},
-                   {"at_rest", {{"value", "yes"}}}};
+      r.results = {
+          {"deposit_thickness_mid_ramp",
+           {{"value", deposit_mm.at(*p.cell_size) * 1e-3}, {"unit", "m"}}},
+          {"at_rest", {{"value", *p.cell_size == flowing_cell ? "no (time limit)" : "yes"}}}};
       runs[point_id(p)] = r;
     }
     return runs;
@@ -254,8 +258,13 @@ TEST(ChuteCalibrationDesign, ALevelThatCannotResolveItsDepositLeavesTheReference
   BenchQuestion thin = chute_point_question(d, d.points[0]);
   const std::string why =
       keep_resolving_levels(thin, runs_with(thin, {{0.02, 45}, {0.01, 25}, {0.005, 26}}));
-  EXPECT_NE(why.find("on 1 CEL level(s)"), std::string::npos) << why;
+  EXPECT_NE(why.find("on 1 CEL level(s) at rest"), std::string::npos) << why;
   EXPECT_NE(why.find("finer --finest-cell"), std::string::npos) << why;
+  // A resolving level still flowing at the end (an upper bound) does not count either.
+  BenchQuestion flowing = chute_point_question(d, d.points[0]);
+  const std::string late = keep_resolving_levels(
+      flowing, runs_with(flowing, {{0.02, 45}, {0.01, 50}, {0.005, 52}}, 0.005));
+  EXPECT_NE(late.find("1 still flowing"), std::string::npos) << late;
 }
 
 }  // namespace
