@@ -6,13 +6,10 @@
 // Runs are made through the bench's machinery and kept in the output folder: a repeated or
 // interrupted calibration reads back what is done.
 #include <chrono>
-#include <ctime>
-#include <functional>
 #include <iostream>
 #include <memory>
 
 #include "designer/bench/bench_run.hpp"
-#include "designer/bench/bench_table.hpp"
 #include "designer/calibrate/arching_report.hpp"
 #include "designer/calibrate/calibration_design.hpp"
 #include "designer/calibrate/calibration_report.hpp"
@@ -21,60 +18,22 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_library.hpp"
 #include "designer/case/material_text.hpp"
+#include "designer/cli/calibration_runs.hpp"
 #include "designer/cli/command_options.hpp"
 #include "designer/cli/commands.hpp"
 #include "designer/cli/exit_codes.hpp"
-#include "designer/cli/invocation.hpp"
-#include "designer/cli/output_files.hpp"
 #include "designer/cli/output_folder.hpp"
 #include "designer/design/drum_check.hpp"
 #include "models/core/commit.hpp"
 #include "models/core/errors.hpp"
-#include "models/os/interrupt_request.hpp"
 #include "models/units/angle.hpp"
 #include "models/units/quantity_format.hpp"
-#include "models/units/quantity_list.hpp"
 #include "models/units/quantity_parser.hpp"
 
 namespace feedflow {
 namespace {
 
-struct CalibrateArguments {
-  std::string material;
-  std::string against;
-  std::string case_file = "cases/pilot_hopper.toml";
-  // The design measured on the pilot hopper: 12 CEL runs, about 40 min on 2 cores (W 40 mm at
-  // 15 deg alone would take about 30 min at 6 cells across the half outlet).
-  std::string outlet_widths = "50,100 mm";
-  std::string semi_angles = "20,35 deg";
-  std::string held_out;  // empty: the scene's default
-  // A drum: its speeds, all within the material's rolling regime (the angle model's domain). The
-  // CEL drum's runs at 10 and 20 rpm are the bench's (read back when its run folders are here).
-  std::string speeds = "10,20,30 rpm";
-  // An inclined plane: its fitted inclinations (the seed's two).
-  std::string angles = "29.5,37 deg";
-  std::string finest_cell;  // empty: a drum's 5 mm, a plane's 10 mm
-  std::vector<double> cells_across = {3.0, 6.0};
-  std::optional<double> order;
-  std::string time = "1s";  // after the opening, as the bench measured the hopper's rate
-  // Verified design records (results.json) whose critical outlet widths an arching calibration
-  // fits.
-  std::vector<std::string> arching;
-  std::string write;
-  bool list = false;
-  CommandOptions options;
-};
-
-std::vector<double> quantity_list(const std::string& text, const Dimension& d, const char* flag) {
-  try {
-    return parse_quantity_list(text, d);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(flag, text, e.what());
-  }
-}
-
-constexpr const char* kHopperHeldOut = "60 mm@30 deg,75 mm@25 deg";
-constexpr const char* kDrumHeldOut = "15,25 rpm";
+using namespace calibrate_cli;
 
 // "45 mm@25 deg,75 mm@25 deg".
 std::vector<DesignPoint> held_out_points(const std::string& text) {
@@ -99,35 +58,6 @@ std::vector<DesignPoint> held_out_points(const std::string& text) {
   return out;
 }
 
-// The material being calibrated, from the case's folder's library.
-Material calibrated_material(const CalibrateArguments& args) {
-  return MaterialLibrary::standard(std::filesystem::path(args.case_file).parent_path())
-      .load(args.material);
-}
-
-// --held-out as a list of `d` (empty: `fallback`; "none": nothing).
-std::vector<double> held_out_list(const CalibrateArguments& args, const Dimension& d,
-                                  const char* fallback = "") {
-  const std::string text = args.held_out.empty() ? fallback : args.held_out;
-  if (text.empty() || text == "none") return {};
-  return quantity_list(text, d, "--held-out");
-}
-
-// --list: every point's run as a command line.
-void list_runs(const std::vector<CalibrationPoint>& points) {
-  for (const auto& p : points)
-    for (const auto& bp : p.question.points) std::cout << bench_invocation(p.question, bp) << '\n';
-}
-
-// Throws NumericalFailure unless at least two fitted points (`what`: "point(s) have a reference
-// rate") have a reference.
-void require_two_fitted(std::ptrdiff_t fitted, const std::string& what,
-                        const std::filesystem::path& out) {
-  if (fitted < 2)
-    throw NumericalFailure("calibration: only " + std::to_string(fitted) + " fitted " + what +
-                           "; see the runs in " + (out / "runs").string());
-}
-
 CalibrationDesign design_of(const CalibrateArguments& args) {
   CalibrationDesign d;
   d.case_file = args.case_file;
@@ -148,64 +78,6 @@ CalibrationDesign design_of(const CalibrateArguments& args) {
   return d;
 }
 
-std::string today() {
-  const std::time_t now = std::time(nullptr);
-  char text[16];
-  std::strftime(text, sizeof text, "%Y-%m-%d", std::gmtime(&now));
-  return text;
-}
-
-struct RunTally {
-  std::size_t made = 0, read_back = 0;
-  std::set<std::string> commits;  // of the programs that made the runs ("" unrecorded)
-};
-
-// A check of a point's runs before its reference is made (it may take levels out of the
-// reference): why the point has no reference, or empty.
-using LevelCheck =
-    std::function<std::string(BenchQuestion&, const std::map<std::string, BenchRun>&)>;
-
-// Each point's runs, made or read back, and its reference; false when Ctrl-C stopped them.
-bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs_root,
-               std::vector<CalibrationPoint>& points, RunTally& tally, const LevelCheck& check) {
-  const bool say = args.options.human_output();
-  std::size_t total = 0, k = 0;
-  for (const auto& p : points) total += p.question.points.size();
-  for (auto& point : points) {
-    std::map<std::string, BenchRun> runs;
-    for (const auto& bp : point.question.points) {
-      ++k;
-      const auto folder = bench_run_folder(runs_root, point.question, bp);
-      if (say && !saved_run_of(point.question, bp, ".", folder))
-        std::cout << "[" << k << "/" << total << "] " << point.question.title << ": " << bp.setting << " ..." << std::flush;
-      bool was_made = false;
-      BenchRun run = run_or_read_back(point.question, bp, ".", folder, was_made);
-      if (was_made) {
-        ++tally.made;
-        if (say) std::cout << " " << format_number(run.wall_seconds, 3) << " s" << (run.done() ? "" : " (" + run.status + ")") << '\n';
-        if (run.status == "interrupted" || interrupt_requested()) return false;
-      } else {
-        ++tally.read_back;
-      }
-      if (!run.done()) point.status = run.status;
-      tally.commits.insert(run.commit);
-      runs[point_id(bp)] = std::move(run);
-    }
-    if (check && point.status == "done")
-      if (std::string why = check(point.question, runs); !why.empty())
-        point.status = std::move(why);
-    point.reference = tabulate(point.question, runs).reference;
-    const BenchReference& r = point.reference;
-    if (point.status != "done") continue;
-    if (!r.value || !(*r.value > 0.0))
-      point.status = "no reference value";
-    else if (r.error_bar && *r.error_bar > kUsableUncertainty * *r.value)
-      point.status = "reference too uncertain (" + format_number(*r.value, 3) + " +- " +
-                     format_number(*r.error_bar, 2) + " " + r.unit + ")";
-  }
-  return true;
-}
-
 // Every point's case, loaded before any run (a typo in --case, a width the case refuses).
 std::vector<Case> point_cases(const CalibrationOutcome& o) {
   std::vector<Case> cases;
@@ -217,66 +89,6 @@ std::vector<Case> point_cases(const CalibrationOutcome& o) {
       throw InputError("--case", o.design.case_file, "a discharge calibration needs a hopper case");
   }
   return cases;
-}
-
-// Every point's runs made or read back below OUT/runs, the tally in the outcome; false (having
-// said how to continue) when Ctrl-C stopped them.
-template <class Outcome>
-bool run_points(const CalibrateArguments& args, const std::filesystem::path& out, Outcome& o,
-                const LevelCheck& check = {}) {
-  install_interrupt_handler();
-  RunTally tally;
-  const bool complete = make_runs(args, out / "runs", o.points, tally, check);
-  o.runs_made = tally.made;
-  o.runs_read_back = tally.read_back;
-  o.run_commits = tally.commits;
-  if (!complete) std::cerr << continue_after_interrupt(out / "runs");
-  return complete;
-}
-
-// The output folder: --out, or out/calibrate/<material>.
-std::filesystem::path output_folder(const CalibrateArguments& args, const Material& material) {
-  return args.options.out.empty()
-             ? std::filesystem::path("out/calibrate") / file_name_friendly(material.name)
-             : std::filesystem::path(args.options.out);
-}
-
-// The material file: --write, the one the material came from, or a copy beside the runs for a
-// built-in material.
-std::filesystem::path material_target(const CalibrateArguments& args, const Material& material,
-                                      const std::filesystem::path& out) {
-  if (!args.write.empty()) return args.write;
-  if (material.origin != "built-in") return material.origin;
-  return out / (file_name_friendly(material.name) + ".toml");
-}
-
-// calibration.json (with the command and the wall time), the material file and --json; then
-// the summary and what was written.
-void write_calibration(const CalibrateArguments& args, nlohmann::ordered_json j,
-                       const std::filesystem::path& out, const std::filesystem::path& target,
-                       const std::string& material_file_text, OutputFolder& folder,
-                       const std::string& summary, std::chrono::steady_clock::time_point start) {
-  j["command_line"] = invocation();
-  j["material_file"] = target.string();
-  j["wall_seconds"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::string json_text = j.dump(2) + "\n";
-  std::vector<OutputFile> files = {{out / "calibration.json", json_text, "--out"},
-                                   {target, material_file_text, "--write"}};
-  if (!args.options.json.empty() && !args.options.json_to_stdout())
-    files.push_back({args.options.json, json_text, "--json"});
-  const auto written = write_outputs(files, args.options.json_to_stdout() ? &json_text : nullptr,
-                                     args.options.verbose, &folder);
-  if (args.options.human_output()) {
-    std::cout << summary << "Written: ";
-    for (std::size_t i = 0; i < written.size(); ++i)
-      std::cout << (i ? ", " : "") << written[i].string();
-    std::cout << '\n';
-  }
-}
-
-std::string runs_text(std::size_t made, std::size_t read_back) {
-  return std::to_string(made) + " run(s) made, " + std::to_string(read_back) + " read back\n";
 }
 
 int run_hopper_calibration(const CalibrateArguments& args,
@@ -317,15 +129,6 @@ int run_hopper_calibration(const CalibrateArguments& args,
                        CalibrationPart::hopper),
       folder, calibration_summary(o, table) + runs_text(o.runs_made, o.runs_read_back), start);
   return kExitOk;
-}
-
-double finest_cell(const CalibrateArguments& args, const char* scene_default) {
-  const std::string text = args.finest_cell.empty() ? scene_default : args.finest_cell;
-  try {
-    return parse_quantity_as(text, dim::length, false);
-  } catch (const std::invalid_argument& e) {
-    throw InputError("--finest-cell", text, e.what());
-  }
 }
 
 DrumCalibrationDesign drum_design_of(const CalibrateArguments& args, const Case& drum_case,
