@@ -11,7 +11,7 @@ namespace feedflow {
 namespace {
 
 // A TOML basic string.
-std::string quoted(std::string_view s) {
+std::string toml_string(std::string_view s) {
   std::string out = "\"";
   for (char c : s) {
     if (c == '"' || c == '\\') out += '\\';
@@ -33,7 +33,7 @@ void write_figures(std::ostream& o, const std::map<std::string, std::string>& fi
   o << "figures = {";
   bool first = true;
   for (const auto& [name, text] : figures) {
-    o << (first ? " " : ", ") << name << " = " << quoted(text);
+    o << (first ? " " : ", ") << name << " = " << toml_string(text);
     first = false;
   }
   o << " }\n";
@@ -46,13 +46,13 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
   o << "# Written by `feedflow calibrate`: reduced-model coefficients fitted to a full rung. The design\n"
        "# check uses them for " << c.geometry << " hoppers with hopper.bulk_density=" << c.density_model << ".\n";
   o << "[calibration]\n";
-  o << "against = " << quoted(c.against) << "\n";
-  o << "rung = " << quoted(c.rung) << "\n";
-  o << "scene = " << quoted(c.scene) << "\n";
-  o << "geometry = " << quoted(c.geometry) << "\n";
-  o << "density_model = " << quoted(c.density_model) << "\n";
-  o << "commit = " << quoted(c.commit) << "\n";
-  o << "date = " << quoted(c.date) << "\n";
+  o << "against = " << toml_string(c.against) << "\n";
+  o << "rung = " << toml_string(c.rung) << "\n";
+  o << "scene = " << toml_string(c.scene) << "\n";
+  o << "geometry = " << toml_string(c.geometry) << "\n";
+  o << "density_model = " << toml_string(c.density_model) << "\n";
+  o << "commit = " << toml_string(c.commit) << "\n";
+  o << "date = " << toml_string(c.date) << "\n";
   for (const auto& [row, model] : c.discharge) {
     o << "\n[calibration.discharge." << row << "]\n";
     o << "coefficients = {";
@@ -66,12 +66,13 @@ std::string calibration_toml(const Calibration& c, const std::vector<Calibration
   }
   for (const auto& p : points) {
     o << "\n[[calibration.points]]\n";
-    o << "outlet_width = " << quoted(format_number(p.outlet_width * 1e3, 6) + " mm") << "\n";
-    o << "semi_angle = " << quoted(format_number(in_degrees(p.semi_angle), 6) + " deg") << "\n";
-    o << "mass_flow_rate = " << quoted(format_number(p.reference, 6) + " kg/s") << "\n";
-    o << "error_bar = " << quoted(format_number(p.error_bar, 4) + " kg/s") << "\n";
+    o << "outlet_width = " << toml_string(format_number(p.outlet_width * 1e3, 6) + " mm") << "\n";
+    o << "semi_angle = " << toml_string(format_number(in_degrees(p.semi_angle), 6) + " deg")
+      << "\n";
+    o << "mass_flow_rate = " << toml_string(format_number(p.reference, 6) + " kg/s") << "\n";
+    o << "error_bar = " << toml_string(format_number(p.error_bar, 4) + " kg/s") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
-    o << "source = " << quoted(p.source) << "\n";
+    o << "source = " << toml_string(p.source) << "\n";
   }
   return o.str();
 }
@@ -84,13 +85,13 @@ std::string arching_calibration_toml(const ArchingCalibration& c,
        "# fitted to a full rung's critical outlet widths. The design check uses it for "
     << c.geometry << " hoppers with\n# hopper.flow_factor=" << c.flow_factor << ".\n";
   o << "[calibration.arching]\n";
-  o << "against = " << quoted(c.against) << "\n";
-  o << "rung = " << quoted(c.rung) << "\n";
-  o << "scene = " << quoted(c.scene) << "\n";
-  o << "geometry = " << quoted(c.geometry) << "\n";
-  o << "flow_factor = " << quoted(c.flow_factor) << "\n";
-  o << "commit = " << quoted(c.commit) << "\n";
-  o << "date = " << quoted(c.date) << "\n";
+  o << "against = " << toml_string(c.against) << "\n";
+  o << "rung = " << toml_string(c.rung) << "\n";
+  o << "scene = " << toml_string(c.scene) << "\n";
+  o << "geometry = " << toml_string(c.geometry) << "\n";
+  o << "flow_factor = " << toml_string(c.flow_factor) << "\n";
+  o << "commit = " << toml_string(c.commit) << "\n";
+  o << "date = " << toml_string(c.date) << "\n";
   for (const auto& [row, model] : c.rows) {
     o << "\n[calibration.arching.rows." << row << "]\n";
     o << "coefficients = { strength_scale = " << number(model.coefficients.at("strength_scale"))
@@ -99,13 +100,14 @@ std::string arching_calibration_toml(const ArchingCalibration& c,
   }
   for (const auto& p : points) {
     o << "\n[[calibration.arching.points]]\n";
-    o << "semi_angle = " << quoted(format_number(in_degrees(p.semi_angle), 6) + " deg") << "\n";
+    o << "semi_angle = " << toml_string(format_number(in_degrees(p.semi_angle), 6) + " deg")
+      << "\n";
     o << "wall_friction_angle = "
-      << quoted(format_number(in_degrees(p.wall_friction_angle), 6) + " deg") << "\n";
-    o << "arches_at = " << quoted(format_number(p.arches_at * 1e3, 6) + " mm") << "\n";
-    o << "flows_at = " << quoted(format_number(p.flows_at * 1e3, 6) + " mm") << "\n";
+      << toml_string(format_number(in_degrees(p.wall_friction_angle), 6) + " deg") << "\n";
+    o << "arches_at = " << toml_string(format_number(p.arches_at * 1e3, 6) + " mm") << "\n";
+    o << "flows_at = " << toml_string(format_number(p.flows_at * 1e3, 6) + " mm") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
-    o << "source = " << quoted(p.source) << "\n";
+    o << "source = " << toml_string(p.source) << "\n";
   }
   return o.str();
 }
@@ -116,26 +118,28 @@ std::string drum_calibration_toml(const DrumCalibration& c,
   o << "# Written by `feedflow calibrate`: the drum's flowing layer fitted to a full rung over "
        "drum speeds.\n";
   o << "[calibration.drum]\n";
-  o << "against = " << quoted(c.against) << "\n";
-  o << "rung = " << quoted(c.rung) << "\n";
-  o << "scene = " << quoted(c.scene) << "\n";
+  o << "against = " << toml_string(c.against) << "\n";
+  o << "rung = " << toml_string(c.rung) << "\n";
+  o << "scene = " << toml_string(c.scene) << "\n";
   o << "end_walls = " << (c.end_walls ? "true" : "false") << "\n";
-  if (c.diameter) o << "diameter = " << quoted(format_number(*c.diameter * 1e3, 6) + " mm") << "\n";
+  if (c.diameter)
+    o << "diameter = " << toml_string(format_number(*c.diameter * 1e3, 6) + " mm") << "\n";
   if (c.fill_fraction) o << "fill_fraction = " << number(*c.fill_fraction) << "\n";
-  o << "commit = " << quoted(c.commit) << "\n";
-  o << "date = " << quoted(c.date) << "\n";
+  o << "commit = " << toml_string(c.commit) << "\n";
+  o << "date = " << toml_string(c.date) << "\n";
   o << "coefficients = { layer_fraction = " << number(c.layer.coefficients.at("layer_fraction"))
     << ", friction_shift = "
-    << quoted(number(in_degrees(c.layer.coefficients.at("friction_shift"))) + " deg") << " }\n";
+    << toml_string(number(in_degrees(c.layer.coefficients.at("friction_shift"))) + " deg")
+    << " }\n";
   write_figures(o, c.layer.figures);
   for (const auto& p : points) {
     o << "\n[[calibration.drum.points]]\n";
-    o << "speed = " << quoted(format_number(in_rpm(p.speed), 6) + " rpm") << "\n";
-    o << "dynamic_angle_of_repose = " << quoted(format_number(in_degrees(p.reference), 6) + " deg")
-      << "\n";
-    o << "error_bar = " << quoted(format_number(in_degrees(p.error_bar), 4) + " deg") << "\n";
+    o << "speed = " << toml_string(format_number(in_rpm(p.speed), 6) + " rpm") << "\n";
+    o << "dynamic_angle_of_repose = "
+      << toml_string(format_number(in_degrees(p.reference), 6) + " deg") << "\n";
+    o << "error_bar = " << toml_string(format_number(in_degrees(p.error_bar), 4) + " deg") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
-    o << "source = " << quoted(p.source) << "\n";
+    o << "source = " << toml_string(p.source) << "\n";
   }
   return o.str();
 }
@@ -147,25 +151,25 @@ std::string chute_calibration_toml(const ChuteCalibration& c,
        "over the\n# inclination of a plane. The chute check uses it; the drum's flowing layer "
        "keeps [surface_flow].\n";
   o << "[calibration.chute]\n";
-  o << "against = " << quoted(c.against) << "\n";
-  o << "rung = " << quoted(c.rung) << "\n";
-  o << "scene = " << quoted(c.scene) << "\n";
-  o << "lowest_angle = " << quoted(number(in_degrees(c.lowest_angle)) + " deg") << "\n";
-  o << "highest_angle = " << quoted(number(in_degrees(c.highest_angle)) + " deg") << "\n";
-  o << "commit = " << quoted(c.commit) << "\n";
-  o << "date = " << quoted(c.date) << "\n";
+  o << "against = " << toml_string(c.against) << "\n";
+  o << "rung = " << toml_string(c.rung) << "\n";
+  o << "scene = " << toml_string(c.scene) << "\n";
+  o << "lowest_angle = " << toml_string(number(in_degrees(c.lowest_angle)) + " deg") << "\n";
+  o << "highest_angle = " << toml_string(number(in_degrees(c.highest_angle)) + " deg") << "\n";
+  o << "commit = " << toml_string(c.commit) << "\n";
+  o << "date = " << toml_string(c.date) << "\n";
   o << "coefficients = { theta2 = "
-    << quoted(number(in_degrees(c.law.coefficients.at("theta2"))) + " deg")
-    << ", stop_length = " << quoted(number(c.law.coefficients.at("stop_length") * 1e3) + " mm")
+    << toml_string(number(in_degrees(c.law.coefficients.at("theta2"))) + " deg")
+    << ", stop_length = " << toml_string(number(c.law.coefficients.at("stop_length") * 1e3) + " mm")
     << " }\n";
   write_figures(o, c.law.figures);
   for (const auto& p : points) {
     o << "\n[[calibration.chute.points]]\n";
-    o << "angle = " << quoted(format_number(in_degrees(p.angle), 6) + " deg") << "\n";
-    o << "deposit_thickness = " << quoted(format_number(p.reference * 1e3, 6) + " mm") << "\n";
-    o << "error_bar = " << quoted(format_number(p.error_bar * 1e3, 4) + " mm") << "\n";
+    o << "angle = " << toml_string(format_number(in_degrees(p.angle), 6) + " deg") << "\n";
+    o << "deposit_thickness = " << toml_string(format_number(p.reference * 1e3, 6) + " mm") << "\n";
+    o << "error_bar = " << toml_string(format_number(p.error_bar * 1e3, 4) + " mm") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
-    o << "source = " << quoted(p.source) << "\n";
+    o << "source = " << toml_string(p.source) << "\n";
   }
   return o.str();
 }

@@ -12,7 +12,9 @@ namespace feedflow {
 namespace {
 
 constexpr double kRestRatio = 1e-4;  // kinetic energy below this x its peak after the release
-enum Column { kTime, kKineticEnergy, kMassOnGrid, kRunOff, kThicknessMidRamp };
+namespace cel_chute_column {
+enum : std::size_t { kTime, kKineticEnergy, kMassOnGrid, kRunOff, kThicknessMidRamp };
+}  // namespace cel_chute_column
 
 const Chute& chute_of(const SimulationRequest& r) { return std::get<Chute>(r.case_data.equipment); }
 
@@ -60,8 +62,9 @@ class CelChuteAdapter final : public CelSceneAdapter {
     if (run().phase() != cel::ScenePhase::event || run().solver().time() < run().event_time() + 1.0) return {};
     double peak = 0.0;
     for (const auto& row : series.rows())
-      if (row[kTime] >= run().event_time()) peak = std::max(peak, row[kKineticEnergy]);
-    return series.rows().back()[kKineticEnergy] < kRestRatio * peak
+      if (row[cel_chute_column::kTime] >= run().event_time())
+        peak = std::max(peak, row[cel_chute_column::kKineticEnergy]);
+    return series.rows().back()[cel_chute_column::kKineticEnergy] < kRestRatio * peak
                ? "at rest: the kinetic energy is below 1e-4 of its peak after the release"
                : "";
   }

@@ -19,7 +19,8 @@ namespace feedflow {
 namespace {
 
 constexpr double kSurfaceSpan = 0.5;  // the surface is fitted over |x - x_c| <= this x R
-enum Column {
+namespace cel_drum_column {
+enum : std::size_t {
   kTime,
   kAngle,
   kKineticEnergy,
@@ -32,6 +33,7 @@ enum Column {
   kChordHigh,
   kSurface
 };
+}  // namespace cel_drum_column
 // The surface's height is sampled at these fractions of its chord, for the bulge of the surface
 // averaged over the steady window, as on the particle rung.
 constexpr int kStations = 17;
@@ -152,9 +154,9 @@ class CelDrumAdapter final : public CelSceneAdapter {
                   {"surface angle", "deg"}, {}, ""};
       ChartSeries series{"CEL-FEM", SeriesStyle::line, {}, {}, {}, -1};
       for (const auto& row : result.series.rows())
-        if (row[kTime] >= run().event_time()) {
-          series.x.push_back(row[kTime] - run().event_time());
-          series.y.push_back(row[kAngle]);
+        if (row[cel_drum_column::kTime] >= run().event_time()) {
+          series.x.push_back(row[cel_drum_column::kTime] - run().event_time());
+          series.y.push_back(row[cel_drum_column::kAngle]);
         }
       chart.series.push_back(series);
       chart.note = "Slope of the volume fraction 0.5 line over the central half of the drum; "
@@ -195,7 +197,9 @@ class CelDrumAdapter final : public CelSceneAdapter {
   std::vector<AngleSample> angles(const TimeSeries& series) const {
     std::vector<AngleSample> a;
     for (const auto& row : series.rows())
-      if (row[kTime] > run().event_time()) a.push_back({row[kTime] - run().event_time(), row[kAngle] * kDegree, true});
+      if (row[cel_drum_column::kTime] > run().event_time())
+        a.push_back({row[cel_drum_column::kTime] - run().event_time(),
+                     row[cel_drum_column::kAngle] * kDegree, true});
     return a;
   }
 
@@ -209,16 +213,16 @@ class CelDrumAdapter final : public CelSceneAdapter {
     double low = 0.0, high = 0.0;
     std::vector<double> height(kStations, 0.0);
     for (const auto& row : series.rows()) {
-      const double t = row[kTime] - run().event_time();
+      const double t = row[cel_drum_column::kTime] - run().event_time();
       if (!(t > a.from) || t > a.to) continue;
-      if (row[kChordHigh] > row[kChordLow]) {
-        low += row[kChordLow], high += row[kChordHigh], ++found;
-        for (int k = 0; k < kStations; ++k) height[k] += row[kSurface + k];
+      if (row[cel_drum_column::kChordHigh] > row[cel_drum_column::kChordLow]) {
+        low += row[cel_drum_column::kChordLow], high += row[cel_drum_column::kChordHigh], ++found;
+        for (int k = 0; k < kStations; ++k) height[k] += row[cel_drum_column::kSurface + k];
       }
-      b.airborne_fraction += row[kAirborne];
-      b.over_top_fraction += row[kOverTop];
-      b.solid_body_fraction += row[kSolidBody];
-      b.shell_speed_ratio += row[kShellSpeed];
+      b.airborne_fraction += row[cel_drum_column::kAirborne];
+      b.over_top_fraction += row[cel_drum_column::kOverTop];
+      b.solid_body_fraction += row[cel_drum_column::kSolidBody];
+      b.shell_speed_ratio += row[cel_drum_column::kShellSpeed];
       ++n;
     }
     if (n == 0) return DrumBedState{};

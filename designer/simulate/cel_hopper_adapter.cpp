@@ -14,7 +14,9 @@
 namespace feedflow {
 namespace {
 
-enum Column { kTime, kDischarged, kMassInHopper, kKineticEnergy };
+namespace cel_hopper_column {
+enum : std::size_t { kTime, kDischarged, kMassInHopper, kKineticEnergy };
+}  // namespace cel_hopper_column
 
 const Hopper& hopper_of(const SimulationRequest& r) { return std::get<Hopper>(r.case_data.equipment); }
 
@@ -237,7 +239,8 @@ class CelHopperAdapter final : public CelSceneAdapter {
   }
 
   HopperDischarge::Rows rows_of(const TimeSeries& series) const {
-    return discharge_rows(series, kTime, kDischarged, kMassInHopper, kKineticEnergy);
+    return discharge_rows(series, cel_hopper_column::kTime, cel_hopper_column::kDischarged,
+                          cel_hopper_column::kMassInHopper, cel_hopper_column::kKineticEnergy);
   }
 
   const Hopper& hopper_;

@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kDefaultSlab = 0.015;    // [m] the seed's slab, five diameters
 constexpr double kDefaultRunTime = 30.0;  // [s] after the release at most (seed: 18.8 s)
-constexpr double kSampleInterval = 0.02;  // [s]
+constexpr double kChuteSampleInterval = 0.02;  // [s]
 
 InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
   const Chute& chute = std::get<Chute>(c.equipment);
@@ -83,8 +83,8 @@ class DemChuteAdapter final : public SceneAdapter {
     run.label = "DEM inclined plane";
     run.origin = run.sample_origin = release_;
     run.duration = request_.end_time ? *request_.end_time : c.dem.end_time ? *c.dem.end_time : kDefaultRunTime;
-    run.sample_interval = kSampleInterval;
-    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
+    run.sample_interval = kChuteSampleInterval;
+    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kChuteSampleInterval);
     run.sample = [this] {
       const DemEngine& e = scene_.engine();
       return std::vector<double>{e.time(),

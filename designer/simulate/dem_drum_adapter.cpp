@@ -17,7 +17,7 @@ namespace feedflow {
 namespace {
 
 constexpr double kDefaultRotation = 10.0;  // [s] of rotation at most (the seed's 10 s)
-constexpr double kSampleInterval = 0.02;   // [s]
+constexpr double kDrumSampleInterval = 0.02;  // [s]
 
 // A slab has no turning end plates to help carry the bed: its shell takes the case's wall
 // friction (the seed FEM's slab value) instead of Table 2's P-W 0.2, with which the bed slips.
@@ -89,8 +89,8 @@ class DemDrumAdapter final : public SceneAdapter {
     run.label = "DEM drum";
     run.origin = run.sample_origin = scene_.rotation_start();
     run.duration = request_.end_time ? *request_.end_time : dem_drum_rotation(c);
-    run.sample_interval = kSampleInterval;
-    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kSampleInterval);
+    run.sample_interval = kDrumSampleInterval;
+    run.snapshot_interval = dem_snapshot_interval(c, run.duration, kDrumSampleInterval);
     run.sample = [this] {
       const DrumSample s = scene_.sample();
       watch_.add(s);

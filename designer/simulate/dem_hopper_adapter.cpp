@@ -19,11 +19,14 @@
 namespace feedflow {
 namespace {
 
-constexpr double kSampleInterval = 0.01;  // [s] time-series rows
-enum Column { kTime, kAfterOpening, kDischarged, kParticles, kMassInDomain, kKineticEnergy };
+constexpr double kHopperSampleInterval = 0.01;  // [s] time-series rows
+namespace dem_hopper_column {
+enum : std::size_t { kTime, kAfterOpening, kDischarged, kParticles, kMassInDomain, kKineticEnergy };
+}  // namespace dem_hopper_column
 
 HopperDischarge::Rows rows_of(const TimeSeries& s) {
-  return discharge_rows(s, kAfterOpening, kDischarged, kMassInDomain, kKineticEnergy);
+  return discharge_rows(s, dem_hopper_column::kAfterOpening, dem_hopper_column::kDischarged,
+                        dem_hopper_column::kMassInDomain, dem_hopper_column::kKineticEnergy);
 }
 
 Estimate number(double v, const std::string& unit, std::optional<double> lo, std::optional<double> hi,
@@ -76,9 +79,9 @@ class DemHopperAdapter final : public SceneAdapter {
     run.label = "DEM hopper";
     run.origin = run.sample_origin = scene_.opening_time;
     run.duration = request_.end_time.value_or(scene_.default_duration);
-    run.sample_interval = kSampleInterval;
+    run.sample_interval = kHopperSampleInterval;
     run.snapshot_interval =
-        dem_snapshot_interval(request_.case_data, run.duration, kSampleInterval);
+        dem_snapshot_interval(request_.case_data, run.duration, kHopperSampleInterval);
     run.sample = [this] {
       const DemEngine& e = *engine_;
       const double t_open = scene_.opening_time;
@@ -149,8 +152,8 @@ class DemHopperAdapter final : public SceneAdapter {
                 {"time after opening", "s"}, {"discharged mass", "kg"}, {}, ""};
     ChartSeries dem{scale == 1.0 ? std::string("DEM") : format("DEM %s x %.4g", part, scale), SeriesStyle::line, {}, {}, {}, -1};
     for (const auto& r : run.series.rows()) {
-      dem.x.push_back(r[kAfterOpening]);
-      dem.y.push_back(r[kDischarged] * scale);
+      dem.x.push_back(r[dem_hopper_column::kAfterOpening]);
+      dem.y.push_back(r[dem_hopper_column::kDischarged] * scale);
     }
     chart.series.push_back(dem);
     const SteadyRate rate = discharge_.steady_rate(rows_of(run.series));

@@ -6,7 +6,7 @@
 namespace feedflow {
 namespace {
 
-constexpr std::size_t kRows = 40;
+constexpr std::size_t kRowsShown = 40;
 
 std::string inputs_of(const SweepRequest& r, const SweepPoint& p) {
   std::string s;
@@ -82,10 +82,10 @@ DesignRecord sweep_record(const SweepRequest& request, const Case& base,
                   (request.solve ? ", solving for " + request.solve->axis.key +
                                        " where the design " + request.solve->target.describe()
                                  : std::string());
-  for (std::size_t n = 0; n < points.size() && n < kRows; ++n)
+  for (std::size_t n = 0; n < points.size() && n < kRowsShown; ++n)
     r.results.emplace_back(inputs_of(request, points[n]), row_of(request, points[n]));
-  if (points.size() > kRows)
-    r.assumptions.push_back(std::to_string(points.size() - kRows) +
+  if (points.size() > kRowsShown)
+    r.assumptions.push_back(std::to_string(points.size() - kRowsShown) +
                             " more points in sweep.csv and sweep.json");
   for (const auto& a : request.axes)
     r.assumptions.push_back("varied " + a.key + ": " + std::to_string(a.values.size()) +

@@ -35,14 +35,14 @@ bool marginal_on(const DesignRecord& r, const std::string& quantity) {
   return false;
 }
 
-std::string quoted(const std::string& a) {
+std::string shell_word(const std::string& a) {
   return a.find(' ') == std::string::npos ? a : "\"" + a + "\"";
 }
 
 // "feedflow design CASE --set ...": this check as typed, to name the command that settles it.
 std::string this_check(const VerificationRequest& args) {
-  std::string again = "feedflow design " + quoted(args.case_file);
-  for (const auto& set : args.sets) again += " --set " + quoted(set);
+  std::string again = "feedflow design " + shell_word(args.case_file);
+  for (const auto& set : args.sets) again += " --set " + shell_word(set);
   return again;
 }
 
@@ -200,7 +200,7 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
       const ArchingVerificationCost cost = estimate_arching_verification(particles, record, plan);
       estimated = cost.seconds;
       if (args.width_tolerance != VerificationRequest{}.width_tolerance)
-        command += " --width-tolerance " + quoted(args.width_tolerance);
+        command += " --width-tolerance " + shell_word(args.width_tolerance);
       command += " --budget " + budget_holding(cost.seconds);
       how = " (" + std::to_string(plan.runs) + " DEM runs with the " + plan.law +
             " law: the outlet, then a bisection on the width to " + args.width_tolerance + "; " +
@@ -231,8 +231,9 @@ bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord&
   if (!wanted) {
     if (rate_marginal || wedge_pattern) {
       const RateVerificationPlan plan = plan_rate_verification(*h, tolerance, 1e9);
-      const std::string command = again + " --verify auto --tolerance " + quoted(args.tolerance) +
-                                  " --budget " + budget_holding(plan.estimated_seconds);
+      const std::string command = again + " --verify auto --tolerance " +
+                                  shell_word(args.tolerance) + " --budget " +
+                                  budget_holding(plan.estimated_seconds);
       record.verdict.reasons.push_back(
           plan.cells_across.empty() ? "the discharge rate cannot be verified: " + plan.description
                                     : std::string(rate_marginal ? "to settle the discharge rate"

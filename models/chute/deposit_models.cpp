@@ -22,16 +22,18 @@ std::optional<ChuteDeposit> release(const Chute& chute, const PouliquenLaw& law)
 
 std::optional<ChuteDeposit> none(const Chute&, const PouliquenLaw&) { return std::nullopt; }
 
-constexpr ChuteDepositModel kRows[] = {
-    {{"l1", Rung::L1, "depth-averaged release from the bin, run to rest (Savage-Hutter, Pouliquen friction)"},
+constexpr ChuteDepositModel kDepositRows[] = {
+    {{"l1", Rung::L1,
+      "depth-averaged release from the bin, run to rest (Savage-Hutter, Pouliquen friction)"},
      &release},
     {{"none", Rung::L0, "no release: the stopping thickness (L0) stands alone"}, &none},
 };
 
-constexpr ModelTable<ChuteDepositModel> kTable{"chute.deposit", "deposit after a release", kRows};
+constexpr ModelTable<ChuteDepositModel> kDepositTable{"chute.deposit", "deposit after a release",
+                                                      kDepositRows};
 
 }  // namespace
 
-const ModelTable<ChuteDepositModel>& chute_deposit_models() { return kTable; }
+const ModelTable<ChuteDepositModel>& chute_deposit_models() { return kDepositTable; }
 
 }  // namespace feedflow

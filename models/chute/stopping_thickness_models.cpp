@@ -13,15 +13,18 @@ StoppingThickness hybrid(const PouliquenLaw& law, const Material& m, double angl
   return hybrid_stopping_thickness(law, m.surface_flow->cohesion, m.bulk.density, angle);
 }
 
-constexpr StoppingThicknessModel kRows[] = {
+constexpr StoppingThicknessModel kStoppingThicknessRows[] = {
     {{"pouliquen", Rung::L0, "Pouliquen h_stop law (Forterre & Pouliquen 2003)"}, &pouliquen},
     {{"hybrid", Rung::L0, "Pouliquen h_stop law with low-stress cohesion (hybrid)"}, &hybrid},
 };
 
-constexpr ModelTable<StoppingThicknessModel> kTable{"chute.stopping_thickness", "stopping thickness", kRows};
+constexpr ModelTable<StoppingThicknessModel> kStoppingThicknessTable{
+    "chute.stopping_thickness", "stopping thickness", kStoppingThicknessRows};
 
 }  // namespace
 
-const ModelTable<StoppingThicknessModel>& stopping_thickness_models() { return kTable; }
+const ModelTable<StoppingThicknessModel>& stopping_thickness_models() {
+  return kStoppingThicknessTable;
+}
 
 }  // namespace feedflow

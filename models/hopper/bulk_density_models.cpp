@@ -32,18 +32,21 @@ HopperDensity compressible(const Material& m, const Compressibility& c) {
   return d;
 }
 
-constexpr HopperDensityModel kRows[] = {
+constexpr HopperDensityModel kDensityRows[] = {
     {{"compressible", Rung::L0,
-      "rho_b at the local stress, Bauer law (without hypoplastic parameters: the table, else constant)"},
+      "rho_b at the local stress, Bauer law (without hypoplastic parameters: the table, else "
+      "constant)"},
      &compressible},
-    {{"table", Rung::L0, "the measured compressibility table rho_b(sigma1) of [flow_properties]"}, &table},
+    {{"table", Rung::L0, "the measured compressibility table rho_b(sigma1) of [flow_properties]"},
+     &table},
     {{"constant", Rung::L0, "the constant design bulk density"}, &constant},
 };
 
-constexpr ModelTable<HopperDensityModel> kTable{"hopper.bulk_density", "bulk density", kRows};
+constexpr ModelTable<HopperDensityModel> kDensityTable{"hopper.bulk_density", "bulk density",
+                                                       kDensityRows};
 
 }  // namespace
 
-const ModelTable<HopperDensityModel>& hopper_density_models() { return kTable; }
+const ModelTable<HopperDensityModel>& hopper_density_models() { return kDensityTable; }
 
 }  // namespace feedflow

@@ -18,18 +18,21 @@ CriticalWidth static_arch(const CriticalOutlet& j, const StaticArch& arch) {
   return arch ? CriticalWidth{arch->width, arch->model} : jenike(j, arch);
 }
 
-constexpr CriticalOutletModel kRows[] = {
-    {{"envelope", Rung::L0, "the larger of Jenike's H(theta) and the static-arch H_a (Jenike alone for cones)"},
+constexpr CriticalOutletModel kCriticalOutletRows[] = {
+    {{"envelope", Rung::L0,
+      "the larger of Jenike's H(theta) and the static-arch H_a (Jenike alone for cones)"},
      &envelope},
     {{"jenike", Rung::L0, "Jenike's critical outlet with H(theta) only"}, &jenike},
-    {{"static_arch", Rung::L0, "the static-arch H_a, wall-friction limited (plane hoppers; Jenike for cones)"},
+    {{"static_arch", Rung::L0,
+      "the static-arch H_a, wall-friction limited (plane hoppers; Jenike for cones)"},
      &static_arch},
 };
 
-constexpr ModelTable<CriticalOutletModel> kTable{"hopper.critical_outlet", "critical outlet width", kRows};
+constexpr ModelTable<CriticalOutletModel> kCriticalOutletTable{
+    "hopper.critical_outlet", "critical outlet width", kCriticalOutletRows};
 
 }  // namespace
 
-const ModelTable<CriticalOutletModel>& critical_outlet_models() { return kTable; }
+const ModelTable<CriticalOutletModel>& critical_outlet_models() { return kCriticalOutletTable; }
 
 }  // namespace feedflow

@@ -52,24 +52,39 @@ std::optional<DischargeRate> rose_tanaka(const DischargeInputs& in, std::span<co
   return DischargeRate{f * flat.rate, flat.model + " x Rose-Tanaka F = " + format_number(f, 3)};
 }
 
-constexpr DischargeModel kRows[] = {
+constexpr DischargeModel kDischargeRows[] = {
     {{"johanson", Rung::L0, "Johanson (1965) with the cohesion factor: mass flow, cohesive solids"},
-     &johanson, "Johanson (cohesive)", true, kFactor},
-    {{"beverloo", Rung::L0, "Beverloo (1961) empirical correlation, k = 1.5, d = d50: flat-bottomed or funnel flow"},
-     &beverloo, "Beverloo", true, kBeverlooCoefficients},
-    {{"brown", Rung::L0, "Brown & Richards minimum-energy theory (wedge hoppers only)"}, &brown, "Brown-Richards",
-     true, kFactor},
+     &johanson,
+     "Johanson (cohesive)",
+     true,
+     kFactor},
+    {{"beverloo", Rung::L0,
+      "Beverloo (1961) empirical correlation, k = 1.5, d = d50: flat-bottomed or funnel flow"},
+     &beverloo,
+     "Beverloo",
+     true,
+     kBeverlooCoefficients},
+    {{"brown", Rung::L0, "Brown & Richards minimum-energy theory (wedge hoppers only)"},
+     &brown,
+     "Brown-Richards",
+     true,
+     kFactor},
     // Not in the band: it refines the Beverloo row for the hopper's walls, not another view.
-    {{"rose_tanaka", Rung::L0, "Beverloo x Rose & Tanaka's (1956) hopper factor (tan theta tan phi_d)^-0.35, "
-                               "phi_d = 90 deg - the mass-flow limit"},
-     &rose_tanaka, "Beverloo x Rose-Tanaka", false, kBeverlooCoefficients},
+    {{"rose_tanaka", Rung::L0,
+      "Beverloo x Rose & Tanaka's (1956) hopper factor (tan theta tan phi_d)^-0.35, "
+      "phi_d = 90 deg - the mass-flow limit"},
+     &rose_tanaka,
+     "Beverloo x Rose-Tanaka",
+     false,
+     kBeverlooCoefficients},
 };
 
-constexpr ModelTable<DischargeModel> kTable{"hopper.discharge", "discharge rate", kRows};
+constexpr ModelTable<DischargeModel> kDischargeTable{"hopper.discharge", "discharge rate",
+                                                     kDischargeRows};
 
 }  // namespace
 
-const ModelTable<DischargeModel>& discharge_models() { return kTable; }
+const ModelTable<DischargeModel>& discharge_models() { return kDischargeTable; }
 
 std::optional<DischargeRate> DischargeModel::published(const DischargeInputs& in) const {
   return evaluate(in, published_coefficients(*this, in.geometry));

@@ -13,15 +13,16 @@ double radial_field(FlowGeometry g, double theta, double delta, double phi_w) {
   return field ? field->flow_factor : enstad_flow_factor(g, theta, delta, phi_w);
 }
 
-constexpr FlowFactorModel kRows[] = {
+constexpr FlowFactorModel kFlowFactorRows[] = {
     {{"enstad", Rung::L0, "Enstad/Arnold-McLean closed form"}, &enstad_flow_factor},
     {{"rsf", Rung::L1, "Jenike radial stress field (shooting)"}, &radial_field},
 };
 
-constexpr ModelTable<FlowFactorModel> kTable{"hopper.flow_factor", "flow factor", kRows};
+constexpr ModelTable<FlowFactorModel> kFlowFactorTable{"hopper.flow_factor", "flow factor",
+                                                       kFlowFactorRows};
 
 }  // namespace
 
-const ModelTable<FlowFactorModel>& flow_factor_models() { return kTable; }
+const ModelTable<FlowFactorModel>& flow_factor_models() { return kFlowFactorTable; }
 
 }  // namespace feedflow

@@ -13,7 +13,6 @@ namespace feedflow {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kPacking = 0.6;       // solid fraction of a poured bed of spheres
 
 // The inward normals of the sector's sides (through the axis at azimuths -alpha/2, +alpha/2).
 Vec3 side_a_normal(double alpha) { return Vec3(std::sin(0.5 * alpha), std::cos(0.5 * alpha), 0.0); }
@@ -130,9 +129,9 @@ RainFillSettings ConicalHopper::rain(double density, int bands, std::uint64_t se
   const SimulationBox b = box();
   const double region = std::max(8.0 * radius, 0.02);
   RainFillSettings s = hopper_rain_settings({Vec3(b.lower.x(), b.lower.y(), 2.0 * radius),
-                                             Vec3(b.upper.x(), b.upper.y(), 2.0 * radius + region), radius,
-                                             density, fill_mass(density, kPacking), fill_top(), wall_top(),
-                                             bands, seed, admits()});
+                                             Vec3(b.upper.x(), b.upper.y(), 2.0 * radius + region),
+                                             radius, density, fill_mass(density, kPouredPacking),
+                                             fill_top(), wall_top(), bands, seed, admits()});
   // At the start the region lies where the cone is narrowest: a random point of the region's
   // box lands in the cone that rarely, so the tries per sphere grow by the box's area over the
   // cone's section there (a 20 deg cone's quarter: x 42).

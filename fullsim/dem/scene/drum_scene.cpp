@@ -12,17 +12,13 @@ namespace feedflow {
 
 namespace {
 
-// Rain-fall (rain_fill.hpp): the region's bottom rides kFollowGap radii above the resting fill
-// and is kRegionHeight radii tall, so a sphere drops at most ~10 R (15 mm for the seed's
+// Rain-fall (rain_fill.hpp): the region's bottom rides kDrumFollowGap radii above the resting fill
+// and is kDrumRegionHeight radii tall, so a sphere drops at most ~10 R (15 mm for the seed's
 // spheres: ~0.7 m/s with the initial 0.5 m/s, soft enough for the hysteretic law); the rate
-// raises the bed by kRiseSpeed, which the region can feed without crowding (a 0.01 s batch
+// raises the bed by kRainRiseSpeed, which the region can feed without crowding (a 0.01 s batch
 // needs ~1 mm of bed, ~2 mm of the region's loose rain).
-constexpr double kFollowGap = 4.0;     // [R]
-constexpr double kRegionHeight = 6.0;  // [R]
-constexpr double kRainSpeed = 0.5;     // [m/s] initial downward speed of the rain
-constexpr double kRiseSpeed = 0.1;     // [m/s] of bed height
-constexpr double kPacking = 0.6;       // solid fraction the rate and the target assume
-constexpr double kSurplus = 1.2;       // rained mass / fill mass, so the trim leaves a level chord
+constexpr double kDrumFollowGap = 4.0;     // [R]
+constexpr double kDrumRegionHeight = 6.0;  // [R]
 
 SimulationBox drum_box(const DrumSceneSpec& s, double r) {
   const double R = 0.5 * s.diameter + 2.0 * r;
@@ -56,19 +52,20 @@ RainFillSettings DrumScene::rain() const {
   RainFillSettings s;
   // Inside the drum from its bottom; across the whole periodic slab, or between the end walls.
   s.region_lower = Vec3(-(R - r), spec_.slab_depth ? 0.0 : r, -R + r);
-  s.region_upper = Vec3(R - r, spec_.slab_depth ? depth : depth - r, -R + r + kRegionHeight * r);
-  s.follow_gap = kFollowGap * r;
+  s.region_upper =
+      Vec3(R - r, spec_.slab_depth ? depth : depth - r, -R + r + kDrumRegionHeight * r);
+  s.follow_gap = kDrumFollowGap * r;
   s.radius = r;
   s.density = settings_.material.particle.density;
   const double fill_mass =
-      spec_.fill_fraction * std::numbers::pi * R * R * depth * s.density * kPacking;
+      spec_.fill_fraction * std::numbers::pi * R * R * depth * s.density * kPouredPacking;
   const double bed_height = fill_line() + R;
-  s.mass_rate = fill_mass * kRiseSpeed / bed_height;
-  s.target_mass = kSurplus * fill_mass;
+  s.mass_rate = fill_mass * kRainRiseSpeed / bed_height;
+  s.target_mass = kRainSurplus * fill_mass;
   // Inserting also ends once the region would leave the drum (a fill fraction near 1).
-  s.target_height = R - (kFollowGap + 3.0) * r;
+  s.target_height = R - (kDrumFollowGap + 3.0) * r;
   s.initial_velocity = Vec3(0.0, 0.0, -kRainSpeed);
-  s.insert_time_cap = 6.0 * kSurplus * bed_height / kRiseSpeed + 2.0;
+  s.insert_time_cap = 6.0 * kRainSurplus * bed_height / kRainRiseSpeed + 2.0;
   s.settle_speed = spec_.settle_speed;
   s.settle_time_cap = spec_.max_settle_time;
   s.trim_height = fill_line();

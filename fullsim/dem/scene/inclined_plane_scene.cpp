@@ -9,18 +9,14 @@ namespace feedflow {
 namespace {
 
 constexpr double kG = 9.81;
-// Rain-fall (rain_fill.hpp): the region's bottom rides kFollowGap radii above the resting fill
-// and is kRegionHeight radii tall, and the spheres start normal to the ramp at kRainSpeed, so
+// Rain-fall (rain_fill.hpp): the region's bottom rides kPlaneFollowGap radii above the resting fill
+// and is kPlaneRegionHeight radii tall, and the spheres start normal to the ramp at kRainSpeed, so
 // they land after ~0.02 s having drifted down the slope by ~0.5 g sin(angle) t^2, about 1 mm
 // at 37 deg (falling along the tilted gravity they drifted ~16 mm for R = 3 mm, the heap leaned
 // on the gate and the back quarter of the bin stayed empty: measured). The rate raises the bed
-// by kRiseSpeed, which the region feeds without crowding.
-constexpr double kFollowGap = 2.0;     // [R]
-constexpr double kRegionHeight = 4.0;  // [R]
-constexpr double kRainSpeed = 0.5;     // [m/s] initial speed of the rain, normal to the ramp
-constexpr double kRiseSpeed = 0.1;     // [m/s] of bed height
-constexpr double kPacking = 0.6;       // solid fraction the rate and the target assume
-constexpr double kSurplus = 1.2;       // rained mass / fill mass, so the trim leaves a level bed
+// by kRainRiseSpeed, which the region feeds without crowding.
+constexpr double kPlaneFollowGap = 2.0;     // [R]
+constexpr double kPlaneRegionHeight = 4.0;  // [R]
 
 SimulationBox plane_box(const InclinedPlaneSpec& s, double r) {
   return SimulationBox{Vec3(-s.bin_length - 2.0 * r, 0.0, -2.0 * r),
@@ -98,17 +94,17 @@ RainFillSettings InclinedPlaneScene::rain() const {
   const InclinedPlaneSpec& p = spec_;
   RainFillSettings s;
   s.region_lower = Vec3(-p.bin_length + r, 0.0, r);
-  s.region_upper = Vec3(-r, p.slab_depth, (1.0 + kRegionHeight) * r);
-  s.follow_gap = kFollowGap * r;
+  s.region_upper = Vec3(-r, p.slab_depth, (1.0 + kPlaneRegionHeight) * r);
+  s.follow_gap = kPlaneFollowGap * r;
   s.radius = r;
   s.density = settings_.material.particle.density;
-  const double fill_mass = p.bin_length * p.fill_height * p.slab_depth * s.density * kPacking;
-  s.mass_rate = fill_mass * kRiseSpeed / p.fill_height;
-  s.target_mass = kSurplus * fill_mass;
+  const double fill_mass = p.bin_length * p.fill_height * p.slab_depth * s.density * kPouredPacking;
+  s.mass_rate = fill_mass * kRainRiseSpeed / p.fill_height;
+  s.target_mass = kRainSurplus * fill_mass;
   // Inserting also ends once the region would rise out of the bin.
-  s.target_height = p.bin_height - (kFollowGap + 3.0) * r;
+  s.target_height = p.bin_height - (kPlaneFollowGap + 3.0) * r;
   s.initial_velocity = Vec3(0.0, 0.0, -kRainSpeed);
-  s.insert_time_cap = 6.0 * kSurplus * p.fill_height / kRiseSpeed + 2.0;
+  s.insert_time_cap = 6.0 * kRainSurplus * p.fill_height / kRainRiseSpeed + 2.0;
   s.settle_speed = p.settle_speed;
   s.settle_time_cap = p.max_settle_time;
   s.trim_height = p.fill_height;

@@ -35,6 +35,15 @@
 
 namespace feedflow {
 
+// What the scenes' rain fills share: the rain's initial speed (with a drop of ~10 R it lands at
+// ~0.7 m/s, soft enough for the hysteretic law), the solid fraction of a poured bed of spheres
+// (the fill mass and the rate assume it), the rate of bed rise the insertion region feeds
+// without crowding, and the surplus rained so the trim leaves a level top.
+inline constexpr double kRainSpeed = 0.5;      // [m/s]
+inline constexpr double kPouredPacking = 0.6;  // solid fraction
+inline constexpr double kRainRiseSpeed = 0.1;  // [m/s] of bed height
+inline constexpr double kRainSurplus = 1.2;    // rained mass / fill mass
+
 struct RainFillSettings {
   Vec3 region_lower = Vec3::Zero();  // insertion region of the centres [m]
   Vec3 region_upper = Vec3::Zero();
