@@ -201,7 +201,10 @@ void DemEngine::prepare(std::ostream& out) {
     skipped_.push_back("cohesion: none (normal force clipped at zero, no contact pulls)");
   kernel_ = make_force_kernel(effective_law_, dem);
 
-  const double rmax = settings_.ranks.max(particles_.max_radius());
+  // A run that emptied (a hopper drained to its last sphere) and was checkpointed so has no
+  // particles left: its grid and step are the material's spheres'.
+  double rmax = settings_.ranks.max(particles_.max_radius());
+  if (!(rmax > 0.0) && particles_.size() == 0) rmax = settings_.material.particle.radius;
   if (!(rmax > 0.0)) throw InputError("", "dem.particles", "no particles, or a zero radius");
   const double cutoff = 2.0 * rmax * (1.0 + settings_.skin_fraction);
   for (int a = 0; a < 3; ++a)

@@ -238,12 +238,12 @@ TEST(DesignVerifyScenes, ChuteLayerThinnerThanTwoParticlesIsNotVerified) {
       "--set chute.bin_height=0.16m --set chute.fill_height=80mm --set chute.length=0.4m "
       "--set chute.gate_opening=50mm",
       "cases/inclined_plane_29_5.toml");
-  // The run is the same bits every time: the twin's deposit is 5.5 mm, under one sphere.
+  // The run is the same bits every time: the twin's deposit is 1.8 mm, under one sphere.
   EXPECT_EQ(j["results"]["deposit_thickness_mid_ramp"]["rung"], "L1");
   EXPECT_FALSE(j["results"].contains("deposit_thickness_mid_ramp_reduced_model"));
   EXPECT_TRUE(said(
       j,
-      "deposit thickness mid ramp not verified on the particle rung (DEM): its 5.479 mm is thinner "
+      "deposit thickness mid ramp not verified on the particle rung (DEM): its 1.816 mm is thinner "
       "than two particle diameters (12 mm), which the run cannot resolve"));
   fs::remove_all(dir);
 }

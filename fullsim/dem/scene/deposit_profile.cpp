@@ -26,4 +26,9 @@ DepositProfile measure_deposit(const BedView& bed, double ramp_length, double su
   return d;
 }
 
+bool bed_at_rest(const BedView& bed, double diameter, double g) {
+  const double mass = bed.total_mass();
+  return mass == 0.0 || bed.kinetic_energy() < 1e-3 * mass * g * diameter;
+}
+
 }  // namespace feedflow

@@ -24,4 +24,9 @@ struct DepositProfile {
 DepositProfile measure_deposit(const BedView& bed, double ramp_length, double surface,
                                double bin_width);
 
+// True once the mean kinetic energy per particle is below a thousandth of lifting one by its
+// diameter against `g` (a particle of the bed moving at about 1 % of sqrt(g d)): the flow has
+// clearly stopped. An empty bed is at rest. Collective on a shared run.
+bool bed_at_rest(const BedView& bed, double diameter, double g);
+
 }  // namespace feedflow

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fullsim/dem/scene/sawtooth_ramp.hpp"
+
 namespace feedflow {
 
 namespace {
@@ -22,13 +24,6 @@ SimulationBox plane_box(const InclinedPlaneSpec& s, double r) {
   return SimulationBox{Vec3(-s.bin_length - 2.0 * r, 0.0, -2.0 * r),
                        Vec3(s.ramp_length + 4.0 * r, s.slab_depth, s.bin_height + 4.0 * r),
                        {false, true, false}};
-}
-
-// A rectangle x0..x1 (at heights z0..z1 along the way) spanning y over three slab depths.
-void add_strip(TriangleMesh& m, const Vec3& a, const Vec3& b, double depth, std::size_t& n) {
-  const Vec3 y0(0.0, -depth, 0.0), y1(0.0, 2.0 * depth, 0.0);
-  m.add_triangle(a + y0, b + y0, b + y1, n++);
-  m.add_triangle(a + y0, b + y1, a + y1, n++);
 }
 
 }  // namespace
@@ -60,19 +55,13 @@ double InclinedPlaneScene::ramp_surface() const { return settings_.material.part
 
 void InclinedPlaneScene::add_meshes(DemEngine& e) const {
   const double r = settings_.material.particle.radius;
-  const double period = 2.0 * r, h = r, depth = spec_.slab_depth;
-  TriangleMesh ramp;
-  ramp.source = "saw-tooth ramp (45 deg faces, period 2R, height R)";
-  std::size_t n = 0;
-  for (double x = 0.0; x < spec_.ramp_length; x += period) {
-    add_strip(ramp, Vec3(x, 0, 0), Vec3(x + 0.5 * period, 0, h), depth, n);
-    add_strip(ramp, Vec3(x + 0.5 * period, 0, h), Vec3(x + period, 0, 0), depth, n);
-  }
-  e.add_mesh_wall(MeshWall("ramp", std::move(ramp)));
+  const double depth = spec_.slab_depth;
+  e.add_mesh_wall(MeshWall("ramp", sawtooth_ramp(0.0, spec_.ramp_length, r, depth)));
   TriangleMesh gate;
   gate.source = "lifted gate plate";
-  n = 0;
-  add_strip(gate, Vec3(0, 0, spec_.gate_opening), Vec3(0, 0, spec_.bin_height + 4.0 * r), depth, n);
+  std::size_t n = 0;
+  add_slab_strip(gate, Vec3(0, 0, spec_.gate_opening), Vec3(0, 0, spec_.bin_height + 4.0 * r),
+                 depth, n);
   e.add_mesh_wall(MeshWall("lifted gate", std::move(gate)));
   // For pictures: the bin (back wall and floor), the lifted gate and the ramp, in the plane's
   // frame.
@@ -137,12 +126,7 @@ void InclinedPlaneScene::open_gate(std::ostream& log) {
 }
 
 bool InclinedPlaneScene::flow_stopped() const {
-  // The mean kinetic energy per particle below a thousandth of lifting one by its diameter.
-  const BedView bed = engine_->bed();
-  const double mass = bed.total_mass();
-  if (mass == 0.0) return true;
-  const double r = settings_.material.particle.radius;
-  return bed.kinetic_energy() < 1e-3 * mass * kG * 2.0 * r;
+  return bed_at_rest(engine_->bed(), 2.0 * settings_.material.particle.radius, kG);
 }
 
 DepositProfile InclinedPlaneScene::deposit() const {

@@ -233,6 +233,24 @@ TEST(DemOutputRestart, WallsSetMovingSinceTheCheckpointRaiseTheFloor) {
   EXPECT_NE(moving.plan().find("moving walls up to 0.02 m/s"), std::string::npos) << moving.plan();
 }
 
+// A run that emptied (every sphere taken by the sink, as a drained hopper's last moments) and
+// was checkpointed so continues: the restored engine, holding no particle, takes its grid and
+// step from the material's spheres, the same step as the run's, and goes on in time.
+TEST(DemOutputRestart, AnEmptiedRunRestarts) {
+  const DemSettings s = restart_settings();
+  DemEngine e = make_restart_scene(s);
+  e.set_outlet_sink(OutletSink::box(Vec3(0, 0, 0), Vec3(0.016, 0.016, 0.02)));
+  std::ostringstream plan;
+  e.prepare(plan);
+  e.run_steps(10);
+  ASSERT_EQ(e.particles().size(), 0u);
+  DemEngine restored(s, e.checkpoint());
+  ASSERT_NO_THROW(restored.prepare(plan));
+  EXPECT_EQ(restored.time_step(), e.time_step());
+  restored.run_steps(10);
+  EXPECT_EQ(restored.step(), 20);
+}
+
 // A damaged checkpoint is refused with the file named: cut to half its size, a future format
 // version, and (at prepare) settings giving another time step than the checkpointed run's.
 TEST(DemOutputRestart, TruncatedWrongVersionOrMismatchedCheckpointIsRefused) {

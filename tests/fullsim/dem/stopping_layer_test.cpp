@@ -1,0 +1,76 @@
+// The stopping layer (Pouliquen's h_stop on the particle rung): a periodic layer on the seed's
+// rough ramp, filled under gravity normal to the ramp, then tilted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "fullsim/dem/scene/stopping_layer.hpp"
+#include "models/units/angle.hpp"
+#include "tests/fullsim/dem/dem_test_scene.hpp"
+
+namespace feedflow {
+namespace {
+
+// The twin's spheres (R = 3 mm, Hertz, Table 2), a layer `diameters` thick over 20 diameters of
+// an 18 mm slab, filled for a ramp of `angle_deg`.
+std::unique_ptr<StoppingLayerScene> filled_layer(double angle_deg, double diameters,
+                                                 std::ostream& log) {
+  StoppingLayerSpec spec;
+  spec.angle = angle_deg * kDegree;
+  spec.thickness = diameters * 6e-3;
+  spec.slab_depth = 0.018;
+  auto layer = std::make_unique<StoppingLayerScene>(dem_test::pine_twin_settings(), spec);
+  layer->fill(log);
+  return layer;
+}
+
+// The rain fill covers the whole periodic length: the mean of the highest tops per diameter is
+// within a radius below the thickness asked (measured 28.4 mm for 30 mm) and none is above it,
+// and the settled layer is at rest.
+TEST(StoppingLayer, FillCoversTheLengthToTheThickness) {
+  std::ostringstream log;
+  const auto layer = filled_layer(30.0, 5.0, log);
+  EXPECT_TRUE(layer->fill_report().settled) << log.str();
+  EXPECT_LE(layer->thickness(), 0.030 + 1e-12);
+  EXPECT_GT(layer->thickness(), 0.030 - 3e-3);
+  EXPECT_TRUE(layer->at_rest());
+  EXPECT_NEAR(layer->length(), 0.120, 1e-12);  // 20 diameters, whole teeth
+}
+
+// Below the friction angle no layer flows, however thick: launched at 0.5 sqrt(g h) on the steep
+// ramp and turned to 20 deg, an eight-diameter layer comes to rest (measured: 0.36 s), and the
+// periodic layer keeps every sphere.
+TEST(StoppingLayer, EveryLayerStopsBelowTheFrictionAngle) {
+  std::ostringstream log;
+  const auto layer = filled_layer(20.0, 8.0, log);
+  const std::size_t n = layer->engine().particles().size();
+  layer->launch(log);
+  EXPECT_GE(layer->launch_speed(), 0.5 * std::sqrt(9.81 * 0.048));
+  const LayerOutcome o = run_layer(*layer, 2.0, log);
+  EXPECT_TRUE(o.at_rest) << log.str();
+  EXPECT_LT(o.time, 1.0);
+  EXPECT_EQ(layer->engine().particles().size(), n);
+}
+
+// Pouliquen's h_stop: at one angle between the two friction angles a thin layer stops and a
+// thick one flows. At 37 deg (measured with these spheres: 2 diameters at rest after 0.6 s, 5
+// diameters running steadily at 0.54 m/s after 2 s, 0.69 m/s after 4 s).
+TEST(StoppingLayer, AThinLayerStopsWhereAThickOneFlows) {
+  std::ostringstream log;
+  const auto thin = filled_layer(37.0, 2.0, log);
+  thin->launch(log);
+  const LayerOutcome stops = run_layer(*thin, 2.0, log);
+  const auto thick = filled_layer(37.0, 5.0, log);
+  thick->launch(log);
+  const LayerOutcome flows = run_layer(*thick, 2.0, log);
+  EXPECT_TRUE(stops.at_rest) << log.str();
+  EXPECT_FALSE(flows.at_rest) << log.str();
+  EXPECT_GT(flows.speed, 0.3);
+  // A flowing layer dilates: its measured thickness grows beyond the settled one.
+  EXPECT_GT(flows.thickness, thick->spec().thickness);
+}
+
+}  // namespace
+}  // namespace feedflow
