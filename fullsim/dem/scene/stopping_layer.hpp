@@ -22,7 +22,6 @@
 //   layer.launch(log);
 //   const LayerOutcome o = run_layer(layer, 2.0, log);  // at rest, or still moving at 2 s
 #include <memory>
-#include <optional>
 #include <ostream>
 
 #include "fullsim/dem/dem_engine.hpp"
