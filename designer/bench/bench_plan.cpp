@@ -122,6 +122,25 @@ std::string millimetres_setting(double metres) {
   return s + "mm";
 }
 
+BenchQuestion verification_run_question(std::string id, std::string case_file,
+                                        std::vector<std::string> sets, std::string set) {
+  BenchQuestion q;
+  q.id = std::move(id);
+  q.case_file = std::move(case_file);
+  q.sets = std::move(sets);
+  q.sets.push_back(std::move(set));
+  return q;
+}
+
+BenchPoint dem_verification_point(std::string setting, std::string quantity) {
+  BenchPoint p;
+  p.setting = std::move(setting);
+  p.rung = "L3";
+  p.quantity = std::move(quantity);
+  p.solver = Solver::dem;
+  return p;
+}
+
 std::string file_name_friendly(std::string text) {
   for (char& c : text)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
@@ -141,6 +160,18 @@ BenchQuestion chute_question(std::string id, std::string title, std::string case
   for (auto& p : q.points)
     if (p.solver == Solver::cel) p.rest_key = "at_rest";
   add_dem_points(q, "deposit_thickness_mid_ramp", "24mm");
+  // The seed's whole plane is a point, not the reference: at the seed's resolution it holds about
+  // 180 000 spheres (100 h an angle on one thread). h_stop's reference on the particle rung is
+  // the bisection of periodic stopping layers to one sphere (about 1 100 spheres for 30 mm).
+  for (auto& p : q.points)
+    if (p.role == ReferenceRole::dem_reference) p.role = ReferenceRole::none;
+  BenchPoint layers;
+  layers.setting = "DEM " + std::string(kSeedLaw) + ", stopping layers bisected to one sphere";
+  layers.rung = "L3";
+  layers.quantity = "stopping_thickness";
+  layers.verify = "dem";
+  layers.role = ReferenceRole::dem_reference;
+  q.points.push_back(std::move(layers));
   return q;
 }
 

@@ -26,9 +26,12 @@ struct BenchPoint {
   std::string quantity;              // the results key this point answers with
   std::optional<Solver> solver;      // none: the design check (reduced models)
   // "dem": the design check verified on that rung (`design --verify dem`: the critical outlet
-  // width bracketed by a bisection of DEM runs, each flowing or arching) to `width_tolerance`.
+  // width bracketed by a bisection of DEM runs, each flowing or arching, to `width_tolerance`; a
+  // chute's h_stop by one of DEM stopping layers, each resting or flowing, to
+  // `thickness_tolerance`).
   std::string verify;
   std::string width_tolerance;       // as typed: "2.5mm"
+  std::string thickness_tolerance;   // as typed: "3mm"
   std::vector<std::string> sets;     // --set KEY=VALUE beyond the question's own
   std::vector<std::string> models;   // --model KEY=NAME
   std::optional<double> time;        // [s] simulated time (--time); none: the scene's own end
@@ -70,6 +73,13 @@ struct BenchQuestion {
 // runs are bench points, shown with their error, but cannot resolve the answer (a 60 mm
 // outlet on 20 mm cells reads "arched" for a hopper that flows).
 constexpr double kReferenceCellsAcross = 3.0;
+
+// A full-rung run a verification makes, as a bench question (`id`) so that a second call reads
+// it back: the case as typed with its `sets` and one `set` more ("hopper.outlet_width=38mm").
+BenchQuestion verification_run_question(std::string id, std::string case_file,
+                                        std::vector<std::string> sets, std::string set);
+// Its DEM point: `setting` names it, the answer is read from the results key `quantity`.
+BenchPoint dem_verification_point(std::string setting, std::string quantity);
 
 // "2.5mm": a length as typed after --set (no space: an invocation is a runnable command).
 std::string millimetres_setting(double metres);

@@ -48,9 +48,12 @@ std::string bench_invocation(const BenchQuestion& q, const BenchPoint& p) {
   for (const auto& set : p.sets) s += " --set " + set;
   for (const auto& model : p.models) s += " --model " + model;
   if (p.time) s += " --time " + seconds_text(*p.time);
-  if (!p.verify.empty())
-    s += " --verify " + p.verify + " --width-tolerance " + p.width_tolerance + " --budget " +
-         kUnlimitedVerificationBudget;
+  if (!p.verify.empty()) {
+    s += " --verify " + p.verify;
+    if (!p.width_tolerance.empty()) s += " --width-tolerance " + p.width_tolerance;
+    if (!p.thickness_tolerance.empty()) s += " --thickness-tolerance " + p.thickness_tolerance;
+    s += " --budget " + std::string(kUnlimitedVerificationBudget);
+  }
   return s;
 }
 

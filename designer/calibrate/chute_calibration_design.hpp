@@ -1,10 +1,11 @@
 #pragma once
 // The design of experiments of a chute calibration: inclinations of one inclined-plane case (some
 // held out of the fit), each answered by a full rung as `feedflow bench` answers the seed plane's
-// deposit: the CEL refinement series down to the finest cell (Richardson), or the DEM run with
-// the seed's law. The deposit a CEL level must resolve is what the rung finds, so the resolution
-// is checked on the reference after the runs (`unresolved_deposit`), not planned from the law
-// being calibrated.
+// deposit: the CEL refinement series down to the finest cell (Richardson), or h_stop on the
+// particle rung with the seed's law (a bisection of periodic stopping layers to one sphere,
+// designer/verify/stopping_verification.hpp). The deposit a CEL level must resolve is what the rung
+// finds, so the resolution is checked on the reference after the runs (`unresolved_deposit`), not
+// planned from the law being calibrated.
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ std::string degrees_text(double angle);
 
 // The point as a bench deposit question at its inclination ("chute_deposit_33.5deg"), on the
 // design's case and material, keeping the rung's reference runs only: every CEL level from
-// 20 mm down to the finest cell, or the DEM reference.
+// 20 mm down to the finest cell, or the DEM reference (the stopping layers' bisection).
 BenchQuestion chute_point_question(const ChuteCalibrationDesign& design,
                                    const ChuteDesignPoint& point);
 

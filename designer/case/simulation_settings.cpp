@@ -29,8 +29,14 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
           "a conical hopper's sector between frictionless symmetry planes (at most 90 deg; "
           "default 360 deg: the whole cone)"),
       optional_number_field<S>(
+          "stopping_layer", &S::stopping_layer, dim::length, "mm", Range{0.0, 1.0, false, true},
+          "a chute's DEM run as a periodic layer of this thickness on the ramp, set flowing "
+          "and tilted to the chute's angle, that comes to rest or flows on (Pouliquen's "
+          "h_stop; design --verify dem bisects it) instead of the bin released down the ramp"),
+      optional_number_field<S>(
           "end_time", &S::end_time, dim::time, "s", kTimeRange,
-          "simulated time after filling (default: until converged or stopped)"),
+          "simulated time after filling (default: until converged or stopped; a stopping "
+          "layer: 2 s after the tilt)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between particle snapshots"),
       optional_number_field<S>("time_step", &S::time_step, dim::time, "us",

@@ -7,6 +7,7 @@
 #include "designer/case/material_library.hpp"
 #include "designer/cli/invocation.hpp"
 #include "designer/cli/output_files.hpp"
+#include "designer/verify/verified_bench_point.hpp"
 #include "models/core/errors.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_list.hpp"
@@ -82,7 +83,7 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
         std::cout << "[" << k << "/" << total << "] " << point.question.title << ": " << bp.setting
                   << " ..." << std::flush;
       bool was_made = false;
-      BenchRun run = run_or_read_back(point.question, bp, ".", folder, was_made);
+      BenchRun run = run_or_read_back_any(point.question, bp, ".", folder, was_made);
       if (was_made) {
         ++tally.made;
         if (say)

@@ -37,6 +37,7 @@ struct DesignArguments {
   std::string budget = "10 min";
   std::string tolerance = "10%";
   std::string width_tolerance = "1 mm";
+  std::string thickness_tolerance;
 };
 
 int run_design(const DesignArguments& args) {
@@ -56,10 +57,15 @@ int run_design(const DesignArguments& args) {
       (args.options.out.empty()
            ? std::filesystem::path("out") / (safe_folder_name(c.name) + "_verify")
            : std::filesystem::path(args.options.out) / "verify");
-  VerificationRequest verify{args.case_file, args.options.sets,
-                             args.verify,    args.budget,
-                             args.tolerance, args.width_tolerance,
-                             verify_runs,    args.options.human_output() ? &std::cout : nullptr};
+  VerificationRequest verify{args.case_file,
+                             args.options.sets,
+                             args.verify,
+                             args.budget,
+                             args.tolerance,
+                             args.width_tolerance,
+                             args.thickness_tolerance,
+                             verify_runs,
+                             args.options.human_output() ? &std::cout : nullptr};
   if (!verify_design(verify, c, record)) {
     std::cerr << continue_after_interrupt(verify_runs);
     return kExitInterrupted;
@@ -112,7 +118,8 @@ void add_design_command(Command& program, int& exit_code) {
           "verify on a full rung: auto (the quantities whose decision is inside their band, on "
           "the seed's rung), cel (a hopper's discharge rate; a chute's or drum's answers from one "
           "continuum run), dem (a hopper's arching: at the outlet, and the critical width by "
-          "bisection; a drum's or chute's answers from one particle run), off")
+          "bisection; a chute's stopping thickness by bisection on periodic layers; a drum's "
+          "answers from one particle run), off")
       .show_default()
       .one_of({"off", "auto", "cel", "dem"})
       .type_name("RUNG");
@@ -127,6 +134,11 @@ void add_design_command(Command& program, int& exit_code) {
               "--verify dem: width of the bracket the bisection on the outlet width stops at")
       .show_default()
       .type_name("WIDTH");
+  command
+      .option("--thickness-tolerance", args->thickness_tolerance,
+              "--verify dem on a chute: width of the bracket the bisection on the stopping "
+              "layer's thickness stops at (default one DEM sphere diameter)")
+      .type_name("THICKNESS");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";

@@ -35,7 +35,7 @@ struct SweepArguments {
   std::vector<std::string> vary;
   std::vector<std::string> models;
   std::string solve_for, target, solve_tolerance, sample, rung, time;
-  VerificationRequest verify;  // --verify, --budget, --tolerance, --width-tolerance
+  VerificationRequest verify;  // --verify, --budget, --tolerance, --width-/--thickness-tolerance
   bool report = false;
   CommandOptions options;
 };
@@ -359,6 +359,11 @@ void add_sweep_command(Command& program, int& exit_code) {
               "--verify dem: bracket of the bisection on the outlet width")
       .show_default()
       .type_name("WIDTH");
+  command
+      .option("--thickness-tolerance", args->verify.thickness_tolerance,
+              "--verify dem on a chute: bracket of the bisection on the stopping layer's "
+              "thickness (default one DEM sphere diameter)")
+      .type_name("THICKNESS");
   command.option("--set", args->options.sets, "a case value every point takes (repeatable)")
       .type_name("KEY=VALUE")
       .repeatable();

@@ -9,6 +9,9 @@ DemSettings dem_case_settings(const Case& c, const DemRanks& ranks) {
   if (!c.material.dem)
     throw InputError(c.file, "material", "material " + c.material.name +
                                              " has no [dem] parameters (seed Table 2); the DEM needs them");
+  if (c.dem.stopping_layer && c.kind() != EquipmentKind::chute)
+    throw InputError(c.file, "dem.stopping_layer",
+                     "a stopping layer is an inclined plane's (chute's) scene; leave the key out");
   DemSettings s;
   s.material = *c.material.dem;
   s.law = choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion);  // checked on loading

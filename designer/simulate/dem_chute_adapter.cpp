@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "designer/simulate/dem_case_settings.hpp"
+#include "designer/simulate/dem_layer_adapter.hpp"
 #include "designer/simulate/reduced_model_beside.hpp"
 #include "fullsim/dem/scene/inclined_plane_scene.hpp"
 #include "models/core/errors.hpp"
@@ -188,6 +189,7 @@ class DemChuteAdapter final : public SceneAdapter {
 }  // namespace
 
 std::unique_ptr<SceneAdapter> dem_chute_adapter(const SimulationRequest& request) {
+  if (request.case_data.dem.stopping_layer) return dem_layer_adapter(request);
   return std::make_unique<DemChuteAdapter>(request);
 }
 

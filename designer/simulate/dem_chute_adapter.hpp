@@ -11,6 +11,7 @@
 
 namespace feedflow {
 
+// A case with [dem] stopping_layer gets the stopping layer's adapter (dem_layer_adapter.hpp).
 std::unique_ptr<SceneAdapter> dem_chute_adapter(const SimulationRequest& request);
 
 }  // namespace feedflow

@@ -48,9 +48,11 @@ BenchRun verified_point(const SweepRequest& request, const FullRungSweep& sweep,
                         const BenchQuestion& question, const BenchPoint& point,
                         const std::filesystem::path& folder, bool& made) {
   const VerificationRequest& v = *sweep.verify;
-  const std::string invocation = bench_invocation(question, point) + " --verify " + v.mode +
-                                 " --tolerance " + v.tolerance + " --budget " + v.budget +
-                                 " --width-tolerance " + v.width_tolerance;
+  const std::string invocation =
+      bench_invocation(question, point) + " --verify " + v.mode + " --tolerance " + v.tolerance +
+      " --budget " + v.budget + " --width-tolerance " + v.width_tolerance +
+      (v.thickness_tolerance.empty() ? std::string()
+                                     : " --thickness-tolerance " + v.thickness_tolerance);
   const std::string inputs = bench_inputs_fingerprint(question, point, "");
   made = false;
   if (auto saved = saved_bench_run(folder, invocation, inputs, false)) return std::move(*saved);

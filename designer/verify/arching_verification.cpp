@@ -7,6 +7,7 @@
 #include "designer/bench/bench_run.hpp"
 #include "designer/verify/dem_run_estimate.hpp"
 #include "designer/verify/rejudge.hpp"
+#include "designer/verify/replace_beside.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/contact/contact_law_registry.hpp"
 #include "models/core/errors.hpp"
@@ -63,20 +64,6 @@ std::string outcomes(const WidthBisection& b) {
   return s;
 }
 
-// Puts `rung` in place of the record's `key` and keeps the reduced estimate beside it.
-void replace_beside(Estimates& results, const std::string& key, Estimate rung) {
-  const auto it =
-      std::find_if(results.begin(), results.end(), [&](const auto& r) { return r.first == key; });
-  if (it == results.end()) {
-    results.emplace_back(key, std::move(rung));
-    return;
-  }
-  Estimate reduced = it->second;
-  rung.display_unit = reduced.display_unit;
-  it->second = std::move(rung);
-  results.emplace(it + 1, reduced_model_key(key), std::move(reduced));
-}
-
 // Where the rung's width goes in the record: in place of the reduced one, unless the DEM's
 // spheres are not the material's grains (coarse-grained): then beside it, as the spheres' own.
 std::string result_key(const Case& c, const ArchingVerificationPlan& plan) {
@@ -90,22 +77,11 @@ std::string result_key(const Case& c, const ArchingVerificationPlan& plan) {
 
 BenchQuestion arching_run_question(const std::string& case_file,
                                    const std::vector<std::string>& sets, double w) {
-  BenchQuestion q;
-  q.id = "verify_arching";
-  q.case_file = case_file;
-  q.sets = sets;
-  q.sets.push_back("hopper.outlet_width=" + millimetres_setting(w));
-  return q;
+  return verification_run_question("verify_arching", case_file, sets,
+                                   "hopper.outlet_width=" + millimetres_setting(w));
 }
 
-BenchPoint arching_run_point() {
-  BenchPoint p;
-  p.setting = "DEM";
-  p.rung = "L3";
-  p.quantity = "arching";
-  p.solver = Solver::dem;
-  return p;
-}
+BenchPoint arching_run_point() { return dem_verification_point("DEM", "arching"); }
 
 std::optional<Case> with_cohesive_contacts(const Case& c) {
   if (!c.dem.cohesion.empty()) return std::nullopt;

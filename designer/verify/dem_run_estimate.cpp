@@ -5,8 +5,10 @@
 #include <numbers>
 #include <sstream>
 
+#include "designer/simulate/dem_case_settings.hpp"
 #include "designer/simulate/dem_drum_adapter.hpp"
 #include "designer/simulate/dem_hopper_scene.hpp"
+#include "designer/simulate/dem_layer_adapter.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/units/quantity_format.hpp"
 
@@ -37,21 +39,37 @@ double sphere_mass(double radius, double density) {
   return density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
 
+// A scene whose spheres all move all the while: `rain` inserted and settled at its cap, then
+// `launch` [s] and `run` [s] of simulated time, in `engine`'s stable step.
+DemRunEstimate whole_bed_estimate(DemEngine& engine, const RainFillSettings& rain, double launch,
+                                  double run) {
+  DemRunEstimate e;
+  e.time_step = stable_step(engine, rain, rain.radius, rain.density);
+  e.spheres = std::floor(rain.target_mass / sphere_mass(rain.radius, rain.density));
+  const double inserting = rain.target_mass / rain.mass_rate;
+  e.fill_time = inserting + rain.settle_time_cap + launch;
+  e.discharge_time = e.run_cap = run;
+  e.particle_steps =
+      e.spheres * (0.5 * inserting + rain.settle_time_cap + launch + run) / e.time_step;
+  e.seconds = e.longest_seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  return e;
+}
+
 }  // namespace
 
 DemRunEstimate estimate_dem_drum_run(const Case& c) {
   const DemSettings settings = dem_drum_settings(c);
   DrumScene scene(settings, dem_drum_spec(c, settings));
-  const RainFillSettings rain = scene.rain();
-  DemRunEstimate e;
-  e.time_step = stable_step(scene.engine(), rain, rain.radius, rain.density);
-  e.spheres = std::floor(rain.target_mass / sphere_mass(rain.radius, rain.density));
-  const double inserting = rain.target_mass / rain.mass_rate;
-  e.fill_time = inserting + rain.settle_time_cap;
-  e.discharge_time = e.run_cap = dem_drum_rotation(c);
-  e.particle_steps = e.spheres * (0.5 * inserting + rain.settle_time_cap + e.run_cap) / e.time_step;
-  e.seconds = e.longest_seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
-  return e;
+  return whole_bed_estimate(scene.engine(), scene.rain(), 0.0, dem_drum_rotation(c));
+}
+
+DemRunEstimate estimate_dem_layer_run(const Case& c) {
+  constexpr double kLaunch = 0.3;  // [s] on the 60 deg ramp to a Froude number of 0.5 (measured)
+  constexpr double kLayerRunTime = 2.0;  // [s] the scene's default after the tilt
+  const DemSettings settings = dem_case_settings(c);
+  StoppingLayerScene scene(settings, stopping_layer_spec(c, settings));
+  return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch,
+                            c.dem.end_time.value_or(kLayerRunTime));
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {

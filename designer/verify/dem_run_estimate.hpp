@@ -44,6 +44,11 @@ struct DemRunEstimate {
 // while, so `seconds` and `longest_seconds` are one. Throws InputError as the scene does.
 DemRunEstimate estimate_dem_drum_run(const Case& c);
 
+// The estimate for one DEM stopping layer of the chute case `c` ([dem] stopping_layer set): its
+// fill, launch and the whole run after the tilt (2 s or dem.end_time; a layer that comes to
+// rest stops sooner), all its spheres all the while. Throws InputError as the scene does.
+DemRunEstimate estimate_dem_layer_run(const Case& c);
+
 // The estimate for one DEM run of the hopper case `c` (its [dem] settings as the run will have
 // them), whose reduced discharge rate is `reduced_rate` [kg/s of the real hopper]. Throws
 // InputError, as the scene does, for a case the DEM scene cannot build.

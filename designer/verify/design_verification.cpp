@@ -9,6 +9,7 @@
 #include "designer/verify/dem_run_estimate.hpp"
 #include "designer/verify/rate_verification.hpp"
 #include "designer/verify/simulation_verification.hpp"
+#include "designer/verify/stopping_verification.hpp"
 #include "fullsim/common/progress_line.hpp"
 #include "models/core/errors.hpp"
 #include "models/os/interrupt_request.hpp"
@@ -68,6 +69,39 @@ bool dem_verification(const VerificationRequest& args, const Case& c, const Hopp
   apply_arching_verification(c, plan, v, record);
   if (v.at_design)
     record.simulation_runs.push_back(std::filesystem::absolute(v.design_run).string());
+  return true;
+}
+
+// --verify dem on a chute: h_stop at its angle bracketed by a bisection of DEM stopping layers.
+// Returns false when Ctrl-C stopped the runs.
+bool stopping_verification(const VerificationRequest& args, const Case& c,
+                           const std::filesystem::path& runs, DesignRecord& record) {
+  const double tolerance =
+      args.thickness_tolerance.empty()
+          ? 0.0
+          : parsed(args.thickness_tolerance, dim::length, "--thickness-tolerance", "3 mm");
+  const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
+  const StoppingVerificationPlan plan = plan_stopping_verification(c, record, tolerance);
+  if (args.log)
+    *args.log << "verify: h_stop at "
+              << format_quantity(std::get<Chute>(c.equipment).angle, "deg", 3)
+              << " on the particle rung, layers from " << format_quantity(plan.low, "mm", 3)
+              << " to " << format_quantity(plan.high, "mm", 3) << " (widened down to "
+              << format_quantity(plan.floor, "mm", 3) << " or up to "
+              << format_quantity(plan.ceiling, "mm", 3) << " if an edge holds), to "
+              << format_quantity(plan.tolerance, "mm", 3) << ": " << plan.cost << '\n';
+  install_interrupt_handler();
+  const StoppingVerification v =
+      verify_stopping(args.case_file, args.sets, plan, budget, runs, args.log);
+  if (v.status == "interrupted") return false;
+  if (v.bisection.steps.empty() && v.status != "done")
+    record.verdict.reasons.push_back(
+        "stopping thickness not verified on the particle rung: " + v.status + ": " +
+        this_check(args) + " --verify dem --budget " + budget_holding(plan.seconds));
+  else
+    apply_stopping_verification(c, plan, v, record);
+  if (!v.bisection.steps.empty())
+    record.simulation_runs.push_back(std::filesystem::absolute(v.last_run).string());
   return true;
 }
 
@@ -163,7 +197,10 @@ std::string cone_flow_pattern_command(const VerificationRequest& args, const Cas
 bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord& record) {
   const std::filesystem::path& runs = args.runs;
   const Hopper* h = std::get_if<Hopper>(&c.equipment);
-  if (!h) return scene_verification(args, c, runs, record);
+  if (!h)
+    return args.mode == "dem" && c.kind() == EquipmentKind::chute
+               ? stopping_verification(args, c, runs, record)
+               : scene_verification(args, c, runs, record);
   if (args.mode == "dem") return dem_verification(args, c, *h, runs, record);
   const double tolerance = parsed(args.tolerance, dim::dimensionless, "--tolerance", "10%");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");

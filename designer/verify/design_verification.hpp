@@ -3,7 +3,9 @@
 // `sweep --verify` run it. A hopper's discharge rate on the continuum rung when asked (cel) or
 // when its decision is inside its band (auto, planned from the shipped bench table by tolerance
 // and budget); its arching on the particle rung (dem: at the outlet, and the critical width by
-// bisection); a drum's or a chute's answers from one simulation on the rung asked. Without a
+// bisection); a chute's stopping thickness on the particle rung (dem: a bisection on the
+// thickness of periodic stopping layers); a drum's or a chute's answers from one simulation on
+// the rung asked otherwise. Without a
 // verification that runs, a MARGINAL verdict says which command would settle it. The runs are
 // kept in their folder and read back when asked again.
 #include <filesystem>
@@ -20,11 +22,12 @@ struct VerificationRequest {
   std::string case_file;          // as typed: the commands it suggests name it
   std::vector<std::string> sets;  // --set KEY=VALUE, as typed
   std::string mode = "off";       // off | auto | cel | dem
-  // As typed (InputError naming --budget, --tolerance or --width-tolerance when one is needed
-  // and is no positive quantity).
+  // As typed (InputError naming --budget, --tolerance, --width-tolerance or
+  // --thickness-tolerance when one is needed and is no positive quantity).
   std::string budget = "10 min";
   std::string tolerance = "10%";
   std::string width_tolerance = "1 mm";
+  std::string thickness_tolerance;  // empty: one DEM sphere diameter
   std::filesystem::path runs;   // the folder of the verification's runs
   std::ostream* log = nullptr;  // the runs' plans and phases; null: silent
 };

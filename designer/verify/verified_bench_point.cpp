@@ -70,7 +70,8 @@ BenchRun run_or_read_back_verified(const BenchQuestion& q, const BenchPoint& p,
     log << std::unitbuf;  // the runs' plans and phases as they come
     request.mode = p.verify;
     request.budget = kUnlimitedVerificationBudget;
-    request.width_tolerance = p.width_tolerance;
+    if (!p.width_tolerance.empty()) request.width_tolerance = p.width_tolerance;
+    request.thickness_tolerance = p.thickness_tolerance;
     request.runs = folder / "verify";
     request.log = &log;
     if (!verify_design(request, c, record)) run.status = "interrupted";
@@ -84,6 +85,13 @@ BenchRun run_or_read_back_verified(const BenchQuestion& q, const BenchPoint& p,
   add_runs(folder / "verify", run);
   if (run.status != "interrupted") save_bench_run(folder, run);
   return run;
+}
+
+BenchRun run_or_read_back_any(const BenchQuestion& q, const BenchPoint& p,
+                              const std::filesystem::path& source_root,
+                              const std::filesystem::path& folder, bool& made) {
+  return p.verify.empty() ? run_or_read_back(q, p, source_root, folder, made)
+                          : run_or_read_back_verified(q, p, source_root, folder, made);
 }
 
 }  // namespace feedflow

@@ -16,4 +16,9 @@ BenchRun run_or_read_back_verified(const BenchQuestion& question, const BenchPoi
                                    const std::filesystem::path& source_root,
                                    const std::filesystem::path& folder, bool& made);
 
+// Any point's run read back or made: a verified one as above, else run_or_read_back's.
+BenchRun run_or_read_back_any(const BenchQuestion& question, const BenchPoint& point,
+                              const std::filesystem::path& source_root,
+                              const std::filesystem::path& folder, bool& made);
+
 }  // namespace feedflow

@@ -1,16 +1,14 @@
 #pragma once
-// The narrowest outlet that flows, found by bisection on the outlet width with a full rung as the
-// judge of each width (it flows, or it arches), inside a band the reduced rung gives: the band's
-// top is judged first (an arch there puts the critical width above the band), then its bottom (a
-// flow there puts it below), then the bracket [arches, flows] is halved until it is narrower than
-// the tolerance: 2 + ceil(log2(band / tolerance)) runs. The judge is assumed monotone in the
-// width (narrower arches sooner); near the transition an arch is a chance event, so the bracket
-// is where the rung's answer changes in these runs, not a sharp limit.
+// The narrowest outlet that flows: the flow threshold's bisection (threshold_bisection.hpp) on
+// the outlet width, with a full rung as the judge of each width (it flows, or it arches), in the
+// hopper's words.
 #include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "designer/verify/threshold_bisection.hpp"
 
 namespace feedflow {
 
@@ -40,8 +38,5 @@ struct WidthBisection {
 WidthBisection bisect_outlet_width(
     double low, double high, double tolerance,
     const std::function<std::optional<OutletOutcome>(double)>& judge);
-
-// The number of judged widths a bisection of [low, high] to `tolerance` takes when it brackets.
-int bisection_runs(double low, double high, double tolerance);
 
 }  // namespace feedflow

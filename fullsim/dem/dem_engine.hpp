@@ -103,8 +103,8 @@ class DemEngine final : public Stepper {
   // Removes the particles whose flag (one per slot) is set.
   void remove_particles(const std::vector<char>& flagged);
   // Gravity from the next step's forces on (a layer filled under gravity normal to its ramp,
-  // then tilted); the blow-up guard books the work of the gravity of each step. A restored run
-  // is given its checkpoint's gravity.
+  // then tilted); the blow-up guard books the work of the gravity of each step. A run restored
+  // from a checkpoint must be set to the checkpoint's gravity first (restore refuses another).
   void set_gravity(const Vec3& g) { settings_.gravity = g; }
   const Vec3& gravity() const { return settings_.gravity; }
   // The analytic wall `name` is gone from time `t` on (a gate opened once the fill has

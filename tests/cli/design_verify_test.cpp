@@ -226,25 +226,30 @@ TEST(DesignVerifyScenes, DrumAngleAndRegimeOnTheParticleRung) {
   fs::remove_all(dir);
 }
 
-// The resolution guard: a chute deposit the DEM twin measures thinner than two of its 6 mm
-// spheres is not taken as a verification; the reduced answer stays (rung L1) and the note says
-// what the run could resolve.
-TEST(DesignVerifyScenes, ChuteLayerThinnerThanTwoParticlesIsNotVerified) {
+// `--verify dem` on a chute brackets h_stop with periodic stopping layers: the twin's spheres (R =
+// 3 mm, Hertz) at 37 deg rest two diameters thick and flow five thick (stopping_layer_test.cpp),
+// so the bracket, one sphere wide, lies within 12-30 mm, far above the Table 1 law's band (1.5-6.8
+// mm): contradicted, and the DEM bracket replaces h_stop (the reduced one beside it). Asked
+// again, every layer is read back.
+TEST(DesignVerifyScenes, ChuteStoppingThicknessIsBracketedByLayers) {
   const fs::path dir = scratch_folder("feedflow_verify_chute", true);
-  const auto j = design_json(
-      dir,
-      "--verify dem --set dem.slab_depth=18mm --set dem.normal_law=hertz --set "
-      "material.dem.particle.radius=3mm --set dem.end_time=1s --set chute.bin_length=100mm "
-      "--set chute.bin_height=0.16m --set chute.fill_height=80mm --set chute.length=0.4m "
-      "--set chute.gate_opening=50mm",
-      "cases/inclined_plane_29_5.toml");
-  // The run is the same bits every time: the twin's deposit is 1.8 mm, under one sphere.
-  EXPECT_EQ(j["results"]["deposit_thickness_mid_ramp"]["rung"], "L1");
-  EXPECT_FALSE(j["results"].contains("deposit_thickness_mid_ramp_reduced_model"));
-  EXPECT_TRUE(said(
-      j,
-      "deposit thickness mid ramp not verified on the particle rung (DEM): its 1.816 mm is thinner "
-      "than two particle diameters (12 mm), which the run cannot resolve"));
+  const std::string args =
+      "--verify dem --budget 1h --set dem.slab_depth=18mm --set dem.normal_law=hertz --set "
+      "material.dem.particle.radius=3mm";
+  const auto j = design_json(dir, args, "cases/inclined_plane_37.toml");
+  const auto& h = j["results"]["stopping_thickness"];
+  EXPECT_EQ(h["rung"], "L3");
+  EXPECT_GE(h["low"].get<double>(), 0.012 - 1e-9);
+  EXPECT_LE(h["high"].get<double>(), 0.030 + 1e-9);
+  EXPECT_LE(h["high"].get<double>() - h["low"].get<double>(), 0.006 + 1e-9);
+  EXPECT_EQ(j["results"]["stopping_thickness_reduced_model"]["rung"], "L0");
+  EXPECT_TRUE(said(j,
+                   "stopping thickness contradicted on the particle rung (DEM, hertz law, "
+                   "periodic layers): a layer "));
+  EXPECT_EQ(j["provenance"]["simulation_runs"].size(), 1u);
+  const auto again = design_json(dir, args, "cases/inclined_plane_37.toml");
+  EXPECT_EQ(again["results"]["stopping_thickness"], h);
+  EXPECT_TRUE(said(again, "; 0 s of runs)"));
   fs::remove_all(dir);
 }
 

@@ -101,10 +101,17 @@ void StoppingLayerScene::launch(std::ostream& log) {
         std::to_string(u) + " m/s after 1 s)");
   tilt_time_ = engine_->time();
   launch_speed_ = u;
-  engine_->set_gravity(ramp_gravity(spec_.angle));
+  tilt();
   log << "stopping layer: launched at " << spec_.launch_angle * 180.0 / std::numbers::pi
       << " deg to " << u << " m/s in " << tilt_time_ - start << " s, then tilted to "
       << spec_.angle * 180.0 / std::numbers::pi << " deg at t = " << tilt_time_ << " s\n";
+}
+
+void StoppingLayerScene::tilt() { engine_->set_gravity(ramp_gravity(spec_.angle)); }
+
+void StoppingLayerScene::resume(double tilt_time, double launch_speed) {
+  tilt_time_ = tilt_time;
+  launch_speed_ = launch_speed;
 }
 
 bool StoppingLayerScene::at_rest() const {

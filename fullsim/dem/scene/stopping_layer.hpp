@@ -64,6 +64,11 @@ class StoppingLayerScene {
   // Froude number, or 1 s), then gravity turned to the ramp's angle: the clock of run_layer()
   // starts. Throws std::runtime_error when the launch ramp did not set it flowing.
   void launch(std::ostream& log);
+  // Gravity turned to the ramp's angle, g (sin a, 0, -cos a): launch() ends with it, and a
+  // restart sets it before the engine is restored from a checkpoint written after the tilt.
+  void tilt();
+  // A restarted run's tilt time and launch speed, as launch() left them.
+  void resume(double tilt_time, double launch_speed);
   double tilt_time() const { return tilt_time_; }
   double launch_speed() const { return launch_speed_; }  // [m/s] when gravity was turned
 

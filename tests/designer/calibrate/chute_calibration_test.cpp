@@ -201,7 +201,8 @@ TEST(ChuteCalibration, DesignUsesTheCalibrationAndSaysSo) {
 
 // A design point is a bench deposit question at its inclination on the design's case: the CEL
 // refinement series down to the finest cell (no variants), all in the reference until their
-// runs show what they resolve; or the DEM reference alone.
+// runs show what they resolve; or the DEM reference alone: h_stop verified by the bisection of
+// stopping layers (the seed's whole plane is 100 h an angle).
 TEST(ChuteCalibrationDesign, EachPointIsABenchDepositQuestion) {
   ChuteCalibrationDesign d;
   d.case_file = "cases/inclined_plane_29_5.toml";
@@ -220,6 +221,11 @@ TEST(ChuteCalibrationDesign, EachPointIsABenchDepositQuestion) {
   const BenchQuestion dem = chute_point_question(d, d.points[0]);
   ASSERT_EQ(dem.points.size(), 1u);
   EXPECT_EQ(dem.points[0].role, ReferenceRole::dem_reference);
+  EXPECT_EQ(dem.points[0].verify, "dem");
+  EXPECT_EQ(dem.points[0].quantity, "stopping_thickness");
+  EXPECT_EQ(bench_invocation(dem, dem.points[0]),
+            "design cases/inclined_plane_29_5.toml --set chute.angle=29.5deg --verify dem "
+            "--budget 10000h");
   // One fitted inclination, or one given twice, is refused by flag.
   d.points = inclination_points({29.5 * kDegree}, {31 * kDegree});
   EXPECT_THROW(d.check(), InputError);

@@ -1,0 +1,198 @@
+#include "designer/verify/stopping_verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+
+#include "designer/bench/bench_run.hpp"
+#include "designer/verify/dem_run_estimate.hpp"
+#include "designer/verify/rejudge.hpp"
+#include "designer/verify/replace_beside.hpp"
+#include "fullsim/common/progress_line.hpp"
+#include "models/core/errors.hpp"
+#include "models/units/quantity_format.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+std::string mm(double metres) { return format_quantity(metres, "mm", 3); }
+
+// Whether the layer flowed (true) or came to rest (false); none when the run gave no answer.
+std::optional<bool> flows_in(const BenchRun& run) {
+  if (!run.done() || !run.results.contains("layer_state") ||
+      !run.results["layer_state"]["value"].is_string())
+    return std::nullopt;
+  return run.results["layer_state"]["value"].get<std::string>() != "at rest";
+}
+
+std::optional<double> measured_thickness(const BenchRun& run) {
+  if (!run.done() || !run.results.contains("layer_thickness") ||
+      !run.results["layer_thickness"]["value"].is_number())
+    return std::nullopt;
+  return run.results["layer_thickness"]["value"].get<double>();
+}
+
+std::string outcomes(const ThresholdBisection& b) {
+  std::string s;
+  for (const auto& step : b.steps)
+    s += (s.empty() ? "" : ", ") + mm(step.size) + (step.flows ? " flows" : " rests");
+  return s;
+}
+
+}  // namespace
+
+BenchQuestion layer_run_question(const std::string& case_file, const std::vector<std::string>& sets,
+                                 double thickness) {
+  return verification_run_question("verify_stopping", case_file, sets,
+                                   "dem.stopping_layer=" + millimetres_setting(thickness));
+}
+
+BenchPoint layer_run_point() { return dem_verification_point("DEM layer", "layer_state"); }
+
+StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignRecord& record,
+                                                    double tolerance) {
+  if (tolerance < 0.0)
+    throw InputError("--thickness-tolerance", "",
+                     "expected a positive thickness, e.g. 3 mm (or leave it out: one sphere)");
+  if (!c.material.dem)
+    throw InputError("--verify", "", "the material has no [dem] table for the particle rung");
+  StoppingVerificationPlan plan;
+  plan.law = c.dem.normal_law.empty() ? std::string("hysteretic_nonlinear2") : c.dem.normal_law;
+  const double d = 2.0 * c.material.dem->particle.radius;
+  plan.sphere_diameter = d;
+  plan.tolerance = tolerance > 0.0 ? tolerance : d;
+  plan.floor = d;
+  plan.ceiling = kLayerCeilingDiameters * d;
+  // The reduced band, kept within [one sphere, the ceiling] and at least two tolerances wide;
+  // without one (no deposit above theta2, or no law), from one sphere to ten.
+  double low = d, high = 10.0 * d;
+  if (const Estimate* e = find_estimate(record.results, "stopping_thickness");
+      e && e->is_number() && e->low && e->high && *e->high > 0.0) {
+    const double per = e->unit == "mm" ? 1e-3 : 1.0;
+    plan.reduced_low = *e->low * per;
+    plan.reduced_high = *e->high * per;
+    low = std::max(*plan.reduced_low, d);
+    high = *plan.reduced_high;
+  }
+  high = std::clamp(high, low + 2.0 * plan.tolerance, plan.ceiling);
+  low = std::min(low, high - 2.0 * plan.tolerance);
+  plan.low = std::max(low, d);
+  plan.high = high;
+  plan.runs = bisection_runs(plan.low, plan.high, plan.tolerance);
+  Case middle = c;
+  middle.dem.stopping_layer = 0.5 * (plan.low + plan.high);
+  const DemRunEstimate each = estimate_dem_layer_run(middle);
+  plan.seconds = plan.runs * each.seconds;
+  plan.cost = "about " + format_duration(plan.seconds) +
+              " by its estimate: " + std::to_string(plan.runs) + " layers, each at " +
+              mm(*middle.dem.stopping_layer) + " " + each.text() +
+              " (one that comes to rest stops sooner)";
+  return plan;
+}
+
+StoppingVerification verify_stopping(const std::string& case_file,
+                                     const std::vector<std::string>& sets,
+                                     const StoppingVerificationPlan& plan, double budget,
+                                     const std::filesystem::path& runs_folder,
+                                     std::ostream* progress) {
+  StoppingVerification v;
+  const BenchPoint point = layer_run_point();
+  const auto folder_of = [&](double h) {
+    return bench_run_folder(runs_folder, layer_run_question(case_file, sets, h), point);
+  };
+  // The layers kept cost nothing: those the bisection would read back before its first new one.
+  const auto kept_answer = [&](double h) -> std::optional<bool> {
+    const auto saved =
+        saved_run_of(layer_run_question(case_file, sets, h), point, ".", folder_of(h));
+    return saved ? flows_in(*saved) : std::nullopt;
+  };
+  const ThresholdBisection kept = bisect_flow_threshold(plan.low, plan.high, plan.tolerance,
+                                                        kept_answer, plan.floor, plan.ceiling);
+  if (kept.end == ThresholdBisection::End::stopped) {
+    const int to_make = std::max(1, plan.runs - static_cast<int>(kept.steps.size()));
+    const double needed = to_make * plan.seconds / plan.runs;
+    if (needed > budget) {
+      v.status = "the bisection needs about " + std::to_string(to_make) + " more DEM layers" +
+                 (kept.steps.empty() ? std::string()
+                                     : " (" + std::to_string(kept.steps.size()) + " kept)") +
+                 ", " + format_duration(needed) + " by their estimate, beyond the budget of " +
+                 format_duration(budget) +
+                 "; layers made are kept and read back, so a larger --budget continues";
+      return v;
+    }
+  }
+  double thickest_rest = 0.0;  // [m] trimmed thickness of the thickest layer at rest so far
+  const auto judge_at = [&](double h) -> std::optional<bool> {
+    if (progress) *progress << "verify: DEM layer " << mm(h) << " ..." << std::flush;
+    bool made = false;
+    v.last_run = folder_of(h);
+    const BenchRun run =
+        run_or_read_back(layer_run_question(case_file, sets, h), point, ".", v.last_run, made);
+    if (made) v.wall_seconds += run.wall_seconds;
+    const auto flows = flows_in(run);
+    if (progress)
+      *progress << ' ' << (flows ? (*flows ? "flows" : "rests") : run.status) << " ("
+                << (made ? format_number(run.wall_seconds, 3) + " s" : std::string("read back"))
+                << ")\n";
+    if (!flows) v.status = run.done() ? "the DEM layer gave no answer" : run.status;
+    if (flows && !*flows && h > thickest_rest) {
+      thickest_rest = h;
+      v.rested_thickness = measured_thickness(run);
+    }
+    return flows;
+  };
+  v.bisection = bisect_flow_threshold(plan.low, plan.high, plan.tolerance, judge_at, plan.floor,
+                                      plan.ceiling);
+  return v;
+}
+
+void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& plan,
+                                 const StoppingVerification& v, DesignRecord& record) {
+  const std::string rung = "particle rung (DEM, " + plan.law + " law, periodic layers)";
+  const std::string angle = format_quantity(std::get<Chute>(c.equipment).angle, "deg", 3);
+  const std::string runs = format_number(v.wall_seconds, 3) + " s of runs";
+  const std::string band = plan.reduced_low ? "the reduced band " + mm(*plan.reduced_low) + " .. " +
+                                                  mm(*plan.reduced_high)
+                                            : std::string("no reduced band");
+  const ThresholdBisection& b = v.bisection;
+  std::string note;
+  using End = ThresholdBisection::End;
+  if (b.end == End::stopped) {
+    note = "stopping thickness not verified on the " + rung + ": " + v.status +
+           (b.steps.empty() ? std::string() : " (layers so far: " + outcomes(b) + ")");
+  } else if (b.end == End::bracketed) {
+    Estimate h;
+    h.value = 0.5 * (b.stops_at + b.flows_at);
+    h.low = b.stops_at;
+    h.high = b.flows_at;
+    h.unit = "m";
+    h.display_unit = "mm";
+    h.model = "DEM (" + plan.law + ") periodic layers at " + angle + ": rests at " +
+              mm(b.stops_at) + ", flows at " + mm(b.flows_at);
+    h.rung = Rung::L3;
+    replace_beside(record.results, "stopping_thickness", h);
+    const bool inside =
+        plan.reduced_low && b.stops_at <= *plan.reduced_high && b.flows_at >= *plan.reduced_low;
+    note = std::string("stopping thickness ") + (inside ? "verified" : "contradicted") +
+           " on the " + rung + ": a layer " + mm(b.stops_at) + " thick comes to rest" +
+           (v.rested_thickness ? " (" + mm(*v.rested_thickness) + " measured at rest)"
+                               : std::string()) +
+           ", one " + mm(b.flows_at) + " thick flows on, " + (inside ? "meeting " : "outside ") +
+           band + " (" + std::to_string(b.steps.size()) + " layers: " + outcomes(b) + "; " + runs +
+           "); the verdict is judged on the DEM bracket";
+  } else {
+    const bool above = b.end == End::stops_at_high_edge;
+    note = "stopping thickness contradicted on the " + rung + ": " +
+           (above ? "a layer " + mm(plan.ceiling) + " thick (" +
+                        format_number(kLayerCeilingDiameters, 3) +
+                        " spheres) comes to rest, so h_stop is above it"
+                  : "a layer of one sphere (" + mm(plan.floor) +
+                        ") flows on, so h_stop is below what the layer can show") +
+           " (" + outcomes(b) + "; " + runs + ")";
+  }
+  rejudge(c, record);
+  record.verdict.reasons.push_back(std::move(note));
+}
+
+}  // namespace feedflow

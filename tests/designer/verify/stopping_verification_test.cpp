@@ -1,0 +1,113 @@
+// A chute's h_stop verified on the particle rung (designer/verify/stopping_verification): the
+// band the layers search, the bracket kept layers give without a DEM step, and what the record
+// says of it.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "designer/case/case_loader.hpp"
+#include "designer/design/design_check.hpp"
+#include "designer/verify/design_verification.hpp"
+#include "designer/verify/stopping_verification.hpp"
+#include "kept_runs.hpp"
+#include "models/core/errors.hpp"
+#include "reports/result_format.hpp"
+
+namespace feedflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("feedflow_stopping_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(d);
+  return d;
+}
+
+// The seed's 29.5 deg plane: the layers start in the reduced h_stop band (L0 nominal 48.6 mm),
+// one of the seed's spheres (3 mm) is the default tolerance and the floor, 40 of them the
+// ceiling; the plan's runs are those of a bisection of its band.
+TEST(StoppingVerification, TheLayersSearchTheReducedBandToOneSphere) {
+  const Case c = load_case("cases/inclined_plane_29_5.toml", std::vector<SetOverride>{});
+  const DesignRecord record = design_check(c, ModelChoices{});
+  const Estimate* reduced = find_estimate(record.results, "stopping_thickness");
+  ASSERT_TRUE(reduced && reduced->low && reduced->high);
+  const auto plan = plan_stopping_verification(c, record, 0.0);
+  const double per = reduced->unit == "mm" ? 1e-3 : 1.0;
+  EXPECT_DOUBLE_EQ(plan.tolerance, 0.003);
+  EXPECT_DOUBLE_EQ(plan.floor, 0.003);
+  EXPECT_DOUBLE_EQ(plan.ceiling, 0.120);
+  EXPECT_NEAR(plan.low, *reduced->low * per, 1e-12);
+  EXPECT_NEAR(plan.high, *reduced->high * per, 1e-12);
+  EXPECT_EQ(plan.runs, bisection_runs(plan.low, plan.high, 0.003));
+  EXPECT_GT(plan.seconds, 0.0);
+  EXPECT_THROW(plan_stopping_verification(c, record, -1.0), InputError);
+}
+
+// Layers kept from an earlier call are read back (no DEM step): laid down as a layer thinner
+// than 15 mm rests and a thicker one flows, the twin's bracket at 37 deg holds 15 mm within one
+// sphere (6 mm), which lies above the reduced band (the Table 1 law's 3.5 mm), so it is
+// contradicted; the DEM bracket takes the stopping thickness's place (L3, in metres), the reduced
+// one is kept beside it, and the note gives the layers and the thickness measured at rest.
+TEST(StoppingVerification, KeptLayersBracketHStopWithoutADemStep) {
+  const std::string file = "tests/data/dem_layer_twin.toml";
+  const Case c = load_case(file, std::vector<SetOverride>{});
+  DesignRecord record = design_check(c, ModelChoices{});
+  const auto plan = plan_stopping_verification(c, record, 0.0);
+  const fs::path runs = scratch("kept");
+  // Lays each layer down as the bisection asks for it.
+  const auto laid = bisect_flow_threshold(
+      plan.low, plan.high, plan.tolerance,
+      [&](double h) -> std::optional<bool> {
+        const bool flows = h >= 0.015;
+        testing::lay_down_layer(file, {}, runs, h, flows ? "flowing" : "at rest", 0.9 * h, 30.0);
+        return flows;
+      },
+      plan.floor, plan.ceiling);
+  const StoppingVerification v = verify_stopping(file, {}, plan, 0.0, runs, nullptr);
+  EXPECT_EQ(v.status, "done");
+  EXPECT_EQ(v.wall_seconds, 0.0);  // all read back
+  ASSERT_EQ(v.bisection.end, ThresholdBisection::End::bracketed);
+  EXPECT_EQ(v.bisection.steps.size(), laid.steps.size());
+  EXPECT_LT(v.bisection.stops_at, 0.015);
+  EXPECT_GE(v.bisection.flows_at, 0.015);
+  EXPECT_LE(v.bisection.flows_at - v.bisection.stops_at, 0.006 + 1e-12);
+  ASSERT_TRUE(v.rested_thickness);
+  EXPECT_DOUBLE_EQ(*v.rested_thickness, 0.9 * v.bisection.stops_at);
+  apply_stopping_verification(c, plan, v, record);
+  const Estimate* h = find_estimate(record.results, "stopping_thickness");
+  ASSERT_NE(h, nullptr);
+  EXPECT_EQ(h->rung, Rung::L3);
+  EXPECT_EQ(h->unit, "m");
+  EXPECT_DOUBLE_EQ(*h->low, v.bisection.stops_at);
+  EXPECT_DOUBLE_EQ(*h->high, v.bisection.flows_at);
+  EXPECT_NE(find_estimate(record.results, reduced_model_key("stopping_thickness")), nullptr);
+  const std::string& note = record.verdict.reasons.back();
+  EXPECT_NE(note.find("stopping thickness contradicted on the particle rung"), std::string::npos)
+      << note;
+  EXPECT_NE(note.find("measured at rest"), std::string::npos) << note;
+  fs::remove_all(runs);
+}
+
+// Without kept layers, a budget below the plan's estimate starts none: `design --verify dem`
+// says what the bisection would take and the command whose budget holds it.
+TEST(StoppingVerification, ABudgetBelowTheEstimateStartsNoLayer) {
+  const std::string file = "tests/data/dem_layer_twin.toml";
+  const Case c = load_case(file, std::vector<SetOverride>{});
+  DesignRecord record = design_check(c, ModelChoices{});
+  VerificationRequest request;
+  request.case_file = file;
+  request.mode = "dem";
+  request.budget = "1 s";
+  request.runs = scratch("budget");
+  ASSERT_TRUE(verify_design(request, c, record));
+  const std::string& note = record.verdict.reasons.back();
+  EXPECT_NE(note.find("beyond the budget of 1 s"), std::string::npos) << note;
+  EXPECT_NE(note.find("--verify dem --budget"), std::string::npos) << note;
+  EXPECT_FALSE(fs::exists(request.runs / "verify_stopping"));
+  EXPECT_EQ(find_estimate(record.results, "stopping_thickness")->rung, Rung::L0);
+  fs::remove_all(request.runs);
+}
+
+}  // namespace
+}  // namespace feedflow
