@@ -152,9 +152,6 @@ void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& 
   const std::string rung = "particle rung (DEM, " + plan.law + " law, periodic layers)";
   const std::string angle = format_quantity(std::get<Chute>(c.equipment).angle, "deg", 3);
   const std::string runs = format_number(v.wall_seconds, 3) + " s of runs";
-  const std::string band = plan.reduced_low ? "the reduced band " + mm(*plan.reduced_low) + " .. " +
-                                                  mm(*plan.reduced_high)
-                                            : std::string("no reduced band");
   const ThresholdBisection& b = v.bisection;
   std::string note;
   using End = ThresholdBisection::End;
@@ -174,13 +171,17 @@ void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& 
     replace_beside(record.results, "stopping_thickness", h);
     const bool inside =
         plan.reduced_low && b.stops_at <= *plan.reduced_high && b.flows_at >= *plan.reduced_low;
-    note = std::string("stopping thickness ") + (inside ? "verified" : "contradicted") +
-           " on the " + rung + ": a layer " + mm(b.stops_at) + " thick comes to rest" +
-           (v.rested_thickness ? " (" + mm(*v.rested_thickness) + " measured at rest)"
-                               : std::string()) +
-           ", one " + mm(b.flows_at) + " thick flows on, " + (inside ? "meeting " : "outside ") +
-           band + " (" + std::to_string(b.steps.size()) + " layers: " + outcomes(b) + "; " + runs +
-           "); the verdict is judged on the DEM bracket";
+    note =
+        std::string("stopping thickness ") + (inside ? "verified" : "contradicted") + " on the " +
+        rung + ": a layer " + mm(b.stops_at) + " thick comes to rest" +
+        (v.rested_thickness ? " (" + mm(*v.rested_thickness) + " measured at rest)"
+                            : std::string()) +
+        ", one " + mm(b.flows_at) + " thick flows on, " +
+        (!plan.reduced_low ? std::string("where the reduced rung leaves no layer")
+                           : (inside ? "meeting" : "outside") + std::string(" the reduced band ") +
+                                 mm(*plan.reduced_low) + " .. " + mm(*plan.reduced_high)) +
+        " (" + std::to_string(b.steps.size()) + " layers: " + outcomes(b) + "; " + runs +
+        "); the verdict is judged on the DEM bracket";
   } else {
     const bool above = b.end == End::stops_at_high_edge;
     note = "stopping thickness contradicted on the " + rung + ": " +

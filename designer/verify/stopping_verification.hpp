@@ -32,7 +32,7 @@ BenchPoint layer_run_point();
 
 struct StoppingVerificationPlan {
   std::string law;  // the DEM normal law's keyword
-  // [m] the reduced rung's h_stop band (none without one: no deposit above theta2, no law)
+  // [m] the reduced rung's h_stop band (none without one: above theta2 it leaves no layer)
   std::optional<double> reduced_low, reduced_high;
   double low = 0.0, high = 0.0;       // [m] the band searched first: the reduced one, at least a
                                       // sphere up and two tolerances wide

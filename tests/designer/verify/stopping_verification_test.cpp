@@ -42,6 +42,14 @@ TEST(StoppingVerification, TheLayersSearchTheReducedBandToOneSphere) {
   EXPECT_EQ(plan.runs, bisection_runs(plan.low, plan.high, 0.003));
   EXPECT_GT(plan.seconds, 0.0);
   EXPECT_THROW(plan_stopping_verification(c, record, -1.0), InputError);
+  // Above the Table 1 law's theta2 (40 deg) the reduced rung leaves no layer: the layers search
+  // one to ten spheres.
+  const Case steep = load_case("cases/inclined_plane_29_5.toml",
+                               std::vector<SetOverride>{{"chute.angle", "42deg"}});
+  const auto none = plan_stopping_verification(steep, design_check(steep, ModelChoices{}), 0.0);
+  EXPECT_FALSE(none.reduced_low);
+  EXPECT_DOUBLE_EQ(none.low, 0.003);
+  EXPECT_DOUBLE_EQ(none.high, 0.030);
 }
 
 // Layers kept from an earlier call are read back (no DEM step): laid down as a layer thinner
