@@ -24,7 +24,8 @@ std::string standard_error(double error, const char* unit, double scale) {
 }  // namespace
 
 std::string chute_rung_text(const ChuteCalibrationOutcome& o) {
-  if (o.design.against == "dem") return "L3 DEM, the seed's law on the plane";
+  if (o.design.against == "dem")
+    return "L3 DEM, the seed's law in periodic stopping layers (h_stop bisected to one sphere)";
   return "L2 CEL-FEM, cells from 20 mm to " + format_quantity(o.design.finest_cell, "mm", 3) +
          " (the levels that put " + format_number(kReferenceCellsAcross, 2) +
          " cells across the deposit they find), Richardson";

@@ -141,10 +141,12 @@ TEST(CalibrateCommand, ADrumCaseCalibratesTheFlowingLayer) {
   EXPECT_NE(material.find("[calibration.drum]"), std::string::npos);
   EXPECT_NE(material.find("[[calibration.drum.points]]"), std::string::npos);
   // The hopper's part as it was.
+  // The hopper's part: from its table to the next part's comment.
   const auto hopper_part = [](const std::string& text) {
     const auto at = text.find("[calibration]");
-    return at == std::string::npos ? std::string()
-                                   : text.substr(at, text.find("[calibration.drum]") - at);
+    return at == std::string::npos
+               ? std::string()
+               : text.substr(at, text.find("\n# Written by `feedflow calibrate`", at) - at);
   };
   EXPECT_EQ(hopper_part(material).substr(0, hopper_part(before).size()), hopper_part(before));
 

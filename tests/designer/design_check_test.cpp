@@ -237,7 +237,9 @@ TEST(HopperCheck, MaterialWithoutFlowPropertiesIsNamed) {
 }
 
 // Seed 3.2: the material flows down the plane at 29.5 and 37 deg and leaves a thinner layer at
-// 37 deg; below theta1 it never flows.
+// 37 deg; below theta1 it never flows. The shipped pine's h_stop law is calibrated against the
+// particle rung's stopping layers (theta2 45.54 deg, L 23.8 mm, theta1 27 deg held): 25.87 mm at
+// 37 deg (the DEM's 24.75-27 mm), 191.7 mm at 29.5 deg (extrapolated below the fitted 37-42 deg).
 TEST(ChuteCheck, SeedAnglesFlowAndThinnerAtSteeper) {
   const std::vector<std::string> fast{"chute.deposit=none"};
   const DesignRecord low = check("cases/inclined_plane_29_5.toml", {}, fast);
@@ -245,28 +247,36 @@ TEST(ChuteCheck, SeedAnglesFlowAndThinnerAtSteeper) {
   EXPECT_EQ(low.verdict.status, VerdictStatus::pass) << reasons(low);
   EXPECT_EQ(steep.verdict.status, VerdictStatus::pass) << reasons(steep);
   EXPECT_GT(value(low, "stopping_thickness"), value(steep, "stopping_thickness"));
-  EXPECT_NEAR(value(low, "stopping_thickness"), 48.6e-3, 0.1e-3);  // reduced_models.md section 0
-  EXPECT_NEAR(value(steep, "stopping_thickness"), 3.5e-3, 0.05e-3);
+  EXPECT_NEAR(value(low, "stopping_thickness"), 191.7e-3, 0.1e-3);
+  EXPECT_NEAR(value(steep, "stopping_thickness"), 25.87e-3, 0.05e-3);
   const DesignRecord flat = check("cases/inclined_plane_29_5.toml", {{"chute.angle", "20 deg"}}, fast);
   EXPECT_EQ(flat.verdict.status, VerdictStatus::fail);
   EXPECT_EQ(text(flat, "deposit"), "never flows (below theta1)");
 }
 
-// The allowed deposit is judged against the stopping-thickness band.
+// The allowed deposit is judged against the stopping-thickness band (at 37 deg 25.9 mm, band
+// 14.4-42 mm): above the band's top a pass, between the value and the top marginal, below a fail.
 TEST(ChuteCheck, StoppingThicknessTarget) {
   const std::vector<std::string> fast{"chute.deposit=none"};
-  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "10 mm"}}, fast).verdict.status,
-            VerdictStatus::pass);
-  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "5 mm"}}, fast).verdict.status,
-            VerdictStatus::marginal);
-  EXPECT_EQ(check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "2 mm"}}, fast).verdict.status,
-            VerdictStatus::fail);
+  EXPECT_EQ(
+      check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "50 mm"}}, fast)
+          .verdict.status,
+      VerdictStatus::pass);
+  EXPECT_EQ(
+      check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "30 mm"}}, fast)
+          .verdict.status,
+      VerdictStatus::marginal);
+  EXPECT_EQ(
+      check("cases/inclined_plane_37.toml", {{"design.max_stopping_thickness", "10 mm"}}, fast)
+          .verdict.status,
+      VerdictStatus::fail);
 }
 
 // Rung L1: the release from the bin comes to rest, conserves its material and leaves a deposit
-// of the order of h_stop at mid-ramp.
+// of the order of h_stop at mid-ramp (at 37 deg: 25.5 against 25.9 mm; at 29.5 deg the bin's
+// 0.285 m^2 of fill spread over the 3 m ramp cannot reach the calibrated law's 192 mm).
 TEST(ChuteCheck, L1ReleaseComesToRest) {
-  const DesignRecord r = check("cases/inclined_plane_29_5.toml");
+  const DesignRecord r = check("cases/inclined_plane_37.toml");
   const auto& deposit = result(r, "deposit_thickness_mid_ramp");
   EXPECT_EQ(deposit.rung, Rung::L1);
   EXPECT_GT(value(r, "deposit_thickness_mid_ramp"), 0.5 * value(r, "stopping_thickness"));

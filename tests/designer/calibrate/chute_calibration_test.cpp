@@ -47,7 +47,7 @@ std::vector<StopObservation> made_by(double theta2, double length,
 ChuteCalibration example(double theta2, double length) {
   ChuteCalibration c;
   c.against = "dem";
-  c.rung = "L3 DEM, the seed's law on the plane";
+  c.rung = "L3 DEM, the seed's law in periodic stopping layers (h_stop bisected to one sphere)";
   c.scene = "inclined_plane_29_5";
   c.lowest_angle = 29.5 * kDegree;
   c.highest_angle = 37 * kDegree;
