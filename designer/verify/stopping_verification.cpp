@@ -64,8 +64,13 @@ StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignR
   plan.tolerance = tolerance > 0.0 ? tolerance : d;
   plan.floor = d;
   plan.ceiling = kLayerCeilingDiameters * d;
-  // The reduced band, kept within [one sphere, the ceiling] and at least two tolerances wide;
-  // without one (no deposit above theta2, or no law), from one sphere to ten.
+  if (plan.tolerance > 0.25 * (plan.ceiling - plan.floor))
+    throw InputError("--thickness-tolerance", format_quantity(plan.tolerance, "mm", 3),
+                     "at most a quarter of the layers' range (" + mm(plan.floor) + " .. " +
+                         mm(plan.ceiling) + "), e.g. one sphere: " + mm(d));
+  // The reduced band, kept within [one sphere, the ceiling] and at least two tolerances wide (a
+  // band above the ceiling searches just below it); without one (no layer above theta2, or no
+  // law), from one sphere to ten.
   double low = d, high = 10.0 * d;
   if (const Estimate* e = find_estimate(record.results, "stopping_thickness");
       e && e->is_number() && e->low && e->high && *e->high > 0.0) {
@@ -75,6 +80,7 @@ StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignR
     low = std::max(*plan.reduced_low, d);
     high = *plan.reduced_high;
   }
+  low = std::min(low, plan.ceiling - 2.0 * plan.tolerance);
   high = std::clamp(high, low + 2.0 * plan.tolerance, plan.ceiling);
   low = std::min(low, high - 2.0 * plan.tolerance);
   plan.low = std::max(low, d);

@@ -46,7 +46,8 @@ struct StoppingVerificationPlan {
 
 // The plan for the chute case and the record of its design check; `tolerance` [m], 0: one
 // sphere diameter (a layer's thickness is read to about one). Throws InputError naming
-// --thickness-tolerance when it is negative, and --verify when the material has no [dem] table.
+// --thickness-tolerance when it is negative or above a quarter of the layers' range, and --verify
+// when the material has no [dem] table.
 StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignRecord& record,
                                                     double tolerance);
 

@@ -46,6 +46,14 @@ TEST(StoppingVerification, TheLayersSearchTheReducedBandToOneSphere) {
   const Case low = load_case("cases/inclined_plane_29_5.toml", std::vector<SetOverride>{});
   EXPECT_DOUBLE_EQ(plan_stopping_verification(low, design_check(low, ModelChoices{}), 0.0).high,
                    0.120);
+  // Near theta1 the whole band lies above the ceiling (28 deg: h_stop 521 mm): the layers search
+  // just below it; a tolerance above a quarter of the layers' range is refused.
+  const Case flat = load_case("cases/inclined_plane_29_5.toml",
+                              std::vector<SetOverride>{{"chute.angle", "28deg"}});
+  const auto top = plan_stopping_verification(flat, design_check(flat, ModelChoices{}), 0.0);
+  EXPECT_DOUBLE_EQ(top.high, 0.120);
+  EXPECT_DOUBLE_EQ(top.low, 0.114);
+  EXPECT_THROW(plan_stopping_verification(c, record, 0.05), InputError);
   // Above the law's theta2 (45.5 deg) the reduced rung leaves no layer: the layers search one
   // to ten spheres.
   const Case steep = load_case("cases/inclined_plane_29_5.toml",
