@@ -60,7 +60,6 @@ StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignR
   StoppingVerificationPlan plan;
   plan.law = c.dem.normal_law.empty() ? std::string("hysteretic_nonlinear2") : c.dem.normal_law;
   const double d = 2.0 * c.material.dem->particle.radius;
-  plan.sphere_diameter = d;
   plan.tolerance = tolerance > 0.0 ? tolerance : d;
   plan.floor = d;
   plan.ceiling = kLayerCeilingDiameters * d;

@@ -37,7 +37,6 @@ struct StoppingVerificationPlan {
   double low = 0.0, high = 0.0;       // [m] the band searched first: the reduced one, at least a
                                       // sphere up and two tolerances wide
   double floor = 0.0, ceiling = 0.0;  // [m] how far it may widen: one sphere, the ceiling
-  double sphere_diameter = 0.0;       // [m]
   double tolerance = 0.0;             // [m]
   int runs = 0;                       // layers judged when the band holds h_stop
   double seconds = 0.0;               // [s] their estimate (at the band's middle)
