@@ -36,7 +36,7 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
       optional_number_field<S>(
           "end_time", &S::end_time, dim::time, "s", kTimeRange,
           "simulated time after filling (default: until converged or stopped; a stopping "
-          "layer: 2 s after the tilt)"),
+          "layer: at rest, run away or 4 s after the tilt; set, only the end counts)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between particle snapshots"),
       optional_number_field<S>("time_step", &S::time_step, dim::time, "us",

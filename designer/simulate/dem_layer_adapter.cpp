@@ -11,7 +11,6 @@ namespace feedflow {
 namespace {
 
 constexpr double kDefaultSlab = 0.015;         // [m] the seed's slab, five diameters
-constexpr double kLayerRunTime = 2.0;          // [s] after the tilt at most
 constexpr double kLayerSampleInterval = 0.02;  // [s]
 constexpr double kFirstJolt = 0.1;  // [s] after the tilt before a rest counts (run_layer's)
 
@@ -100,11 +99,10 @@ class DemLayerAdapter final : public SceneAdapter {
     };
     if (!request_.end_time)
       run.stop = [this](const TimeSeries&) {
-        return scene_.engine().time() - scene_.tilt_time() >= kFirstJolt && scene_.at_rest()
-                   ? std::string(
-                         "the layer is at rest: kinetic energy per particle below "
-                         "1e-3 m g d")
-                   : std::string();
+        if (scene_.engine().time() - scene_.tilt_time() >= kFirstJolt && scene_.at_rest())
+          return std::string("the layer is at rest: kinetic energy per particle below 1e-3 m g d");
+        if (scene_.runs_away()) return run_away_reason();
+        return std::string();
       };
     const double tilt = scene_.tilt_time(), launch = scene_.launch_speed();
     run.save_scene = [tilt, launch](Hdf5File& f) {
@@ -148,14 +146,19 @@ class DemLayerAdapter final : public SceneAdapter {
                                   Rung::L3, ""});
     results.emplace_back("time_after_tilt",
                          Estimate{after_tilt, "s", std::nullopt, std::nullopt,
-                                  at_rest ? "to rest" : "run length (still flowing)", Rung::L3,
-                                  ""});
+                                  at_rest              ? "to rest"
+                                  : scene_.runs_away() ? "to run away (flows on)"
+                                                       : "run length (still flowing)",
+                                  Rung::L3, ""});
     results.emplace_back("run_wall_time",
                          Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
                                   "wall time after the tilt", Rung::L3, ""});
     auto& notes = record.verdict.reasons;
     if (run.end == RunEnd::interrupted)
       notes.push_back("interrupted: the layer's state is the state so far");
+    else if (!at_rest && scene_.runs_away())
+      notes.push_back(run_away_reason() + ": thicker than h_stop at " +
+                      format_quantity(chute_.angle, "deg", 3));
     else if (!at_rest)
       notes.push_back("the layer still flows " + format_quantity(after_tilt, "s", 3) +
                       " after the tilt at " + format_quantity(scene_.downslope_speed(), "m/s", 3) +
@@ -215,7 +218,15 @@ class DemLayerAdapter final : public SceneAdapter {
     const Case& c = request_.case_data;
     return request_.end_time ? *request_.end_time
            : c.dem.end_time  ? *c.dem.end_time
-                             : kLayerRunTime;
+                             : kStoppingLayerRunCap;
+  }
+
+  std::string run_away_reason() const {
+    return "the layer runs away: its mean speed down the slope reached " +
+           format_quantity(scene_.downslope_speed(), "m/s", 3) + ", " +
+           format_number(StoppingLayerScene::kRunAwaySpeedRatio, 2) + " times its launch speed (" +
+           format_quantity(scene_.launch_speed(), "m/s", 3) + "), " +
+           format_quantity(scene_.engine().time() - scene_.tilt_time(), "s", 3) + " after the tilt";
   }
 
   const SimulationRequest& request_;

@@ -40,18 +40,21 @@ double sphere_mass(double radius, double density) {
 }
 
 // A scene whose spheres all move all the while: `rain` inserted and settled at its cap, then
-// `launch` [s] and `run` [s] of simulated time, in `engine`'s stable step.
+// `launch` [s] and `run` [s] of simulated time (`cap` [s] at the longest), in `engine`'s stable
+// step.
 DemRunEstimate whole_bed_estimate(DemEngine& engine, const RainFillSettings& rain, double launch,
-                                  double run) {
+                                  double run, double cap) {
   DemRunEstimate e;
   e.time_step = stable_step(engine, rain, rain.radius, rain.density);
   e.spheres = std::floor(rain.target_mass / sphere_mass(rain.radius, rain.density));
   const double inserting = rain.target_mass / rain.mass_rate;
   e.fill_time = inserting + rain.settle_time_cap + launch;
-  e.discharge_time = e.run_cap = run;
-  e.particle_steps =
-      e.spheres * (0.5 * inserting + rain.settle_time_cap + launch + run) / e.time_step;
-  e.seconds = e.longest_seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  e.discharge_time = run;
+  e.run_cap = cap;
+  const double before = 0.5 * inserting + rain.settle_time_cap + launch;
+  e.particle_steps = e.spheres * (before + run) / e.time_step;
+  e.seconds = e.particle_steps / kDemHopperParticleStepsPerSecond;
+  e.longest_seconds = e.spheres * (before + cap) / e.time_step / kDemHopperParticleStepsPerSecond;
   return e;
 }
 
@@ -60,16 +63,22 @@ DemRunEstimate whole_bed_estimate(DemEngine& engine, const RainFillSettings& rai
 DemRunEstimate estimate_dem_drum_run(const Case& c) {
   const DemSettings settings = dem_drum_settings(c);
   DrumScene scene(settings, dem_drum_spec(c, settings));
-  return whole_bed_estimate(scene.engine(), scene.rain(), 0.0, dem_drum_rotation(c));
+  const double rotation = dem_drum_rotation(c);
+  return whole_bed_estimate(scene.engine(), scene.rain(), 0.0, rotation, rotation);
 }
 
 DemRunEstimate estimate_dem_layer_run(const Case& c) {
   constexpr double kLaunch = 0.3;  // [s] on the 60 deg ramp to a Froude number of 0.5 (measured)
-  constexpr double kLayerRunTime = 2.0;  // [s] the scene's default after the tilt
+  // [s] after the tilt, as layers ended (measured at 37-42 deg: at rest after 0.4-1.8 s, run
+  // away after 0.3-1.6 s)
+  constexpr double kTypicalRun = 1.5;
   const DemSettings settings = dem_case_settings(c);
   StoppingLayerScene scene(settings, stopping_layer_spec(c, settings));
-  return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch,
-                            c.dem.end_time.value_or(kLayerRunTime));
+  if (c.dem.end_time)
+    return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, *c.dem.end_time,
+                              *c.dem.end_time);
+  return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, kTypicalRun,
+                            kStoppingLayerRunCap);
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {

@@ -45,8 +45,9 @@ struct DemRunEstimate {
 DemRunEstimate estimate_dem_drum_run(const Case& c);
 
 // The estimate for one DEM stopping layer of the chute case `c` ([dem] stopping_layer set): its
-// fill, launch and the whole run after the tilt (2 s or dem.end_time; a layer that comes to
-// rest stops sooner), all its spheres all the while. Throws InputError as the scene does.
+// fill, launch and the run after the tilt (dem.end_time, else 1.5 s as layers end at rest or
+// run away, and at most the 4 s cap), all its spheres all the while. Throws InputError as the scene
+// does.
 DemRunEstimate estimate_dem_layer_run(const Case& c);
 
 // The estimate for one DEM run of the hopper case `c` (its [dem] settings as the run will have

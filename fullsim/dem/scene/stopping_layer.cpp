@@ -118,6 +118,10 @@ bool StoppingLayerScene::at_rest() const {
   return bed_at_rest(engine_->bed(), 2.0 * settings_.material.particle.radius, kLayerG);
 }
 
+bool StoppingLayerScene::runs_away() const {
+  return downslope_speed() >= kRunAwaySpeedRatio * launch_speed_;
+}
+
 double StoppingLayerScene::downslope_speed() const {
   const BedView bed = engine_->bed();
   const ParticleStore& p = bed.store();
@@ -163,6 +167,10 @@ LayerOutcome run_layer(StoppingLayerScene& layer, double max_time, std::ostream&
       o.at_rest = true;
       break;
     }
+    if (layer.runs_away()) {
+      o.ran_away = true;
+      break;
+    }
     if (t >= max_time) break;
     if (t >= next_line) {
       log << "stopping layer: " << t << " s after the tilt, mean speed down the slope " << u
@@ -171,9 +179,12 @@ LayerOutcome run_layer(StoppingLayerScene& layer, double max_time, std::ostream&
     }
   }
   o.thickness = layer.thickness();
-  log << "stopping layer: " << (o.at_rest ? "at rest" : "still moving") << " " << o.time
-      << " s after the tilt (mean speed " << o.speed << " m/s, peak " << o.peak_speed
-      << " m/s), thickness " << o.thickness << " m\n";
+  log << "stopping layer: "
+      << (o.at_rest    ? "at rest"
+          : o.ran_away ? "run away (flows on)"
+                       : "still moving")
+      << " " << o.time << " s after the tilt (mean speed " << o.speed << " m/s, peak "
+      << o.peak_speed << " m/s), thickness " << o.thickness << " m\n";
   return o;
 }
 

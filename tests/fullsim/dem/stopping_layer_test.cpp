@@ -56,7 +56,8 @@ TEST(StoppingLayer, EveryLayerStopsBelowTheFrictionAngle) {
 
 // Pouliquen's h_stop: at one angle between the two friction angles a thin layer stops and a
 // thick one flows. At 37 deg (measured with these spheres: 2 diameters at rest after 0.6 s, 5
-// diameters running steadily at 0.54 m/s after 2 s, 0.69 m/s after 4 s).
+// diameters running steadily at 0.54 m/s after 2 s, 0.69 m/s after 4 s); the thick one is
+// told apart before the run's end, once it runs away past 1.5 times its launch speed.
 TEST(StoppingLayer, AThinLayerStopsWhereAThickOneFlows) {
   std::ostringstream log;
   const auto thin = filled_layer(37.0, 2.0, log);
@@ -66,8 +67,12 @@ TEST(StoppingLayer, AThinLayerStopsWhereAThickOneFlows) {
   thick->launch(log);
   const LayerOutcome flows = run_layer(*thick, 2.0, log);
   EXPECT_TRUE(stops.at_rest) << log.str();
+  EXPECT_FALSE(stops.ran_away) << log.str();
+  EXPECT_LT(stops.peak_speed, StoppingLayerScene::kRunAwaySpeedRatio * thin->launch_speed());
   EXPECT_FALSE(flows.at_rest) << log.str();
-  EXPECT_GT(flows.speed, 0.3);
+  EXPECT_TRUE(flows.ran_away) << log.str();
+  EXPECT_LT(flows.time, 2.0) << log.str();
+  EXPECT_GE(flows.speed, StoppingLayerScene::kRunAwaySpeedRatio * thick->launch_speed());
   // A flowing layer dilates: its measured thickness grows beyond the settled one.
   EXPECT_GT(flows.thickness, thick->spec().thickness);
 }
