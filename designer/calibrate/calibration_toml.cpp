@@ -158,8 +158,10 @@ std::string chute_calibration_toml(const ChuteCalibration& c,
   o << "highest_angle = " << toml_string(number(in_degrees(c.highest_angle)) + " deg") << "\n";
   o << "commit = " << toml_string(c.commit) << "\n";
   o << "date = " << toml_string(c.date) << "\n";
-  o << "coefficients = { theta2 = "
-    << toml_string(number(in_degrees(c.law.coefficients.at("theta2"))) + " deg")
+  o << "coefficients = { ";
+  if (const auto t1 = c.law.coefficients.find("theta1"); t1 != c.law.coefficients.end())
+    o << "theta1 = " << toml_string(number(in_degrees(t1->second)) + " deg") << ", ";
+  o << "theta2 = " << toml_string(number(in_degrees(c.law.coefficients.at("theta2"))) + " deg")
     << ", stop_length = " << toml_string(number(c.law.coefficients.at("stop_length") * 1e3) + " mm")
     << " }\n";
   write_figures(o, c.law.figures);

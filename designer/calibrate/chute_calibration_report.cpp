@@ -11,8 +11,9 @@
 namespace feedflow {
 namespace {
 
-std::string law_text(double theta2, double length) {
-  return "theta2 " + format_quantity(theta2, "deg", 4) + ", L " + format_quantity(length, "mm", 3);
+std::string law_text(double theta1, double theta2, double length) {
+  return "theta1 " + format_quantity(theta1, "deg", 4) + ", theta2 " +
+         format_quantity(theta2, "deg", 4) + ", L " + format_quantity(length, "mm", 3);
 }
 
 // "+- 1.2 deg": a standard error, or "(exact: no spare point)" without one.
@@ -78,7 +79,12 @@ nlohmann::ordered_json chute_calibration_json(const ChuteCalibrationOutcome& o,
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
   };
   j["stopping_thickness_law"] = {
-      {"theta1_held", {{"value", f.theta1}, {"unit", "rad"}}},
+      {"theta1_fitted", f.theta1_fitted},
+      {"theta1_before", {{"value", f.theta1_before}, {"unit", "rad"}}},
+      {"theta1_after", {{"value", f.theta1_after}, {"unit", "rad"}}},
+      {"theta1_standard_error",
+       {{"value", f.theta1_fitted ? finite_or_null(f.theta1_error) : nlohmann::ordered_json()},
+        {"unit", "rad"}}},
       {"theta2_before", {{"value", f.theta2_before}, {"unit", "rad"}}},
       {"theta2_after", {{"value", f.theta2_after}, {"unit", "rad"}}},
       {"theta2_standard_error", {{"value", finite_or_null(f.theta2_error)}, {"unit", "rad"}}},
@@ -106,8 +112,10 @@ std::string chute_calibration_summary(const ChuteCalibrationOutcome& o,
                                              [](const StopObservation& x) { return x.held_out; }));
   const StopLawFit& f = o.fit;
   s << "Chute stopping thickness, " << o.material << ", against " << table.rung << " ("
-    << o.observations.size() << " inclinations, " << held << " held out; theta1 held at "
-    << format_quantity(f.theta1, "deg", 4) << "):\n";
+    << o.observations.size() << " inclinations, " << held << " held out; theta1 "
+    << (f.theta1_fitted ? std::string("fitted")
+                        : "held at " + format_quantity(f.theta1_before, "deg", 4))
+    << "):\n";
   for (std::size_t i = 0; i < o.observations.size(); ++i) {
     const auto& x = o.observations[i];
     s << "  " << format_quantity(x.angle, "deg", 4) << (x.held_out ? " (held out)" : "")
@@ -118,10 +126,13 @@ std::string chute_calibration_summary(const ChuteCalibrationOutcome& o,
       << ", band holds it: " << (f.band_holds_before[i] ? "yes" : "no") << " -> "
       << (f.band_holds_after[i] ? "yes" : "no") << '\n';
   }
-  s << "  law: " << law_text(f.theta2_before, f.length_before) << " -> "
-    << law_text(f.theta2_after, f.length_after);
+  s << "  law: " << law_text(f.theta1_before, f.theta2_before, f.length_before) << " -> "
+    << law_text(f.theta1_after, f.theta2_after, f.length_after);
   if (f.failure.empty())
-    s << " (theta2" << standard_error(f.theta2_error, "deg", 1.0 / kDegree) << ", L"
+    s << " ("
+      << (f.theta1_fitted ? "theta1" + standard_error(f.theta1_error, "deg", 1.0 / kDegree) + ", "
+                          : std::string())
+      << "theta2" << standard_error(f.theta2_error, "deg", 1.0 / kDegree) << ", L"
       << standard_error(f.length_error, "mm", 1e3) << ")";
   s << "; rms error " << percent(f.fit_rms_before) << " -> " << percent(f.fit_rms_after);
   if (held)

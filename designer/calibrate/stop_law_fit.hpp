@@ -1,12 +1,13 @@
 #pragma once
 // Fits Pouliquen's stopping-thickness law (theta2 and L of h_stop = L (tan theta2 - tan theta) /
-// (tan theta - tan theta1), theta1 held at the material's) to a full rung's deposits on an
-// inclined plane over its inclination, by least squares on the log of the thickness, each point
-// weighted by its reference's relative uncertainty (at least kFloorUncertainty), through the
-// chute check's own evaluation (so `design` reproduces the fit), and measures the check before
-// and after on the fitted and the held-out inclinations. Deposits no such law can hold (thicker
-// at a steeper inclination, thinning more slowly than any theta2 below 89 deg allows, a deposit
-// at or below theta1) leave the law as published and say why.
+// (tan theta - tan theta1); theta1 too from three fitted inclinations on, else held at the
+// material's) to a full rung's deposits on an inclined plane over its inclination, by least squares
+// on the log of the thickness, each point weighted by its reference's relative uncertainty (at
+// least kFloorUncertainty), through the chute check's own evaluation (so `design` reproduces the
+// fit), and measures the check before and after on the fitted and the held-out inclinations.
+// Deposits no such law can hold (thicker at a steeper inclination, thinning more slowly than any
+// theta2 below 89 deg allows, a deposit at or below a held theta1) leave the law as published and
+// say why.
 #include <string>
 #include <vector>
 
@@ -22,8 +23,13 @@ struct StopObservation {
   bool held_out = false;
 };
 
+// Fitted inclinations from which theta1 is fitted too (below, the material's is held).
+constexpr std::size_t kFittedForTheta1 = 3;
+
 struct StopLawFit {
-  double theta1 = 0.0;                             // [rad] held
+  bool theta1_fitted = false;                      // else held at the material's
+  double theta1_before = 0.0, theta1_after = 0.0;  // [rad]
+  double theta1_error = 0.0;                       // standard error [rad] when fitted
   double theta2_before = 0.0, theta2_after = 0.0;  // [rad]
   double length_before = 0.0, length_after = 0.0;  // [m] L
   double theta2_error = 0.0,

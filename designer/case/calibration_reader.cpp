@@ -24,7 +24,7 @@ constexpr std::string_view kDrumCoefficients[] = {"layer_fraction", "friction_sh
 constexpr std::string_view kChuteKeys[] = {"against",       "rung",   "scene", "lowest_angle",
                                            "highest_angle", "commit", "date",  "coefficients",
                                            "figures",       "points"};
-constexpr std::string_view kChuteCoefficients[] = {"theta2", "stop_length"};
+constexpr std::string_view kChuteCoefficients[] = {"theta1", "theta2", "stop_length"};
 constexpr std::string_view kModelKeys[] = {"coefficients", "figures"};
 
 const toml::table& table_at(const toml::node& node, const std::string& key, const TableContext& ctx) {
@@ -246,6 +246,13 @@ ChuteCalibration read_chute(const toml::table& t, const TableContext& ctx) {
   if (!theta2)
     missing_key(coefficients, cctx.dotted("theta2"), "an angle, e.g. \"41 deg\"", ctx.file);
   c.law.coefficients["theta2"] = read_inclination(*theta2, cctx.dotted("theta2"), cctx);
+  if (const toml::node* theta1 = coefficients.get("theta1")) {  // fitted, else the material's
+    const double t1 = read_inclination(*theta1, cctx.dotted("theta1"), cctx);
+    if (!(t1 < c.law.coefficients["theta2"]))
+      throw InputError(location(*theta1, ctx.file), cctx.dotted("theta1"),
+                       "expected an angle below theta2's");
+    c.law.coefficients["theta1"] = t1;
+  }
   const toml::node* length = coefficients.get("stop_length");
   if (!length)
     missing_key(coefficients, cctx.dotted("stop_length"), "a length, e.g. \"12 mm\"", ctx.file);

@@ -164,7 +164,8 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
   for (std::size_t k = 0; k < todo.size(); ++k) {
     const auto& [q, p] = todo[k];
     const std::filesystem::path dir = bench_run_folder(runs_root, *q, *p);
-    if (say && !args.tabulate && !saved_run_of(*q, *p, cases_root, dir))
+    const bool announced = say && !args.tabulate && !saved_run_of(*q, *p, cases_root, dir);
+    if (announced)
       std::cout << "[" << k + 1 << "/" << todo.size() << "] " << q->id << ": " << p->rung << " "
                 << p->setting
                 << (interrupted_bench_run(dir, bench_invocation(*q, *p),
@@ -181,7 +182,8 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
     }
     bool made = false;
     BenchRun run = run_or_read_back_any(*q, *p, cases_root, dir, made);
-    if (!made) {
+    if (!made) {  // a verified point may be made again from its kept runs alone
+      if (announced) std::cout << " read back\n";
       runs.by_folder[dir] = std::move(run);
       ++runs.read_back;
       continue;

@@ -79,16 +79,17 @@ bool make_runs(const CalibrateArguments& args, const std::filesystem::path& runs
     for (const auto& bp : point.question.points) {
       ++k;
       const auto folder = bench_run_folder(runs_root, point.question, bp);
-      if (say && !saved_run_of(point.question, bp, ".", folder))
+      const bool announced = say && !saved_run_of(point.question, bp, ".", folder);
+      if (announced)
         std::cout << "[" << k << "/" << total << "] " << point.question.title << ": " << bp.setting
                   << " ..." << std::flush;
       bool was_made = false;
       BenchRun run = run_or_read_back_any(point.question, bp, ".", folder, was_made);
+      if (announced)
+        std::cout << " " << (was_made ? format_number(run.wall_seconds, 3) + " s" : "read back")
+                  << (run.done() ? "" : " (" + run.status + ")") << '\n';
       if (was_made) {
         ++tally.made;
-        if (say)
-          std::cout << " " << format_number(run.wall_seconds, 3) << " s"
-                    << (run.done() ? "" : " (" + run.status + ")") << '\n';
         if (run.status == "interrupted" || interrupt_requested()) return false;
       } else {
         ++tally.read_back;

@@ -90,14 +90,17 @@ std::vector<std::string> chute_assumptions(const Chute& chute, const Material& m
     for (const auto& [name, text] : c.law.figures)
       if (name.find("_before") == std::string::npos)
         figures += (figures.empty() ? "" : ", ") + name + " " + text;
-    out.push_back("theta2 = " + format_quantity(m.surface_flow->theta2, "deg", 4) +
+    const bool theta1_fitted = c.law.coefficients.contains("theta1");
+    const std::string theta1 = "theta1 = " + format_quantity(m.surface_flow->theta1, "deg", 4);
+    out.push_back((theta1_fitted ? theta1 + ", " : std::string()) +
+                  "theta2 = " + format_quantity(m.surface_flow->theta2, "deg", 4) +
                   " and L = " + format_quantity(m.surface_flow->stop_length, "mm", 4) +
                   " are the material's [calibration.chute], fitted to " + c.rung + " over " +
                   std::to_string(c.points) + " inclinations of " + c.scene + " (commit " +
-                  c.commit + ", " + c.date + (figures.empty() ? "" : "; " + figures) +
-                  "), theta1 = " + format_quantity(m.surface_flow->theta1, "deg", 4) +
-                  " held at the material's; the band is widened by " +
-                  format_number(100.0 * calibration_error(m), 3) + " %.");
+                  c.commit + ", " + c.date + (figures.empty() ? "" : "; " + figures) + ")" +
+                  (theta1_fitted ? std::string() : ", " + theta1 + " held at the material's") +
+                  "; the band is widened by " + format_number(100.0 * calibration_error(m), 3) +
+                  " %.");
     constexpr double kSlack = 0.5 * kDegree;
     if (chute.angle < c.lowest_angle - kSlack || chute.angle > c.highest_angle + kSlack)
       out.push_back("This chute's " + format_quantity(chute.angle, "deg", 4) +
@@ -130,10 +133,12 @@ Material chute_material(const Material& m) {
   const CalibratedModel& law = m.calibration->chute->law;
   out.surface_flow->theta2 = law.coefficients.at("theta2");
   out.surface_flow->stop_length = law.coefficients.at("stop_length");
+  if (const auto t1 = law.coefficients.find("theta1"); t1 != law.coefficients.end())
+    out.surface_flow->theta1 = t1->second;
   if (!(out.surface_flow->theta2 > out.surface_flow->theta1))
     throw InputError(m.origin, "calibration.chute.coefficients.theta2",
-                     "expected an angle above the material's theta1 (" +
-                         format_quantity(m.surface_flow->theta1, "deg", 4) + "), got " +
+                     "expected an angle above theta1 (" +
+                         format_quantity(out.surface_flow->theta1, "deg", 4) + "), got " +
                          format_quantity(out.surface_flow->theta2, "deg", 4));
   return out;
 }

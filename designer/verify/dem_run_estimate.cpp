@@ -69,8 +69,8 @@ DemRunEstimate estimate_dem_drum_run(const Case& c) {
 
 DemRunEstimate estimate_dem_layer_run(const Case& c) {
   constexpr double kLaunch = 0.3;  // [s] on the 60 deg ramp to a Froude number of 0.5 (measured)
-  // [s] after the tilt, as layers ended (measured at 37-42 deg: at rest after 0.4-1.8 s, run
-  // away after 0.3-1.6 s)
+  // [s] after the tilt, as layers end (measured at 37-42 deg: at rest after 0.24-1.84 s, run
+  // away after 0.16-1.44 s)
   constexpr double kTypicalRun = 1.5;
   const DemSettings settings = dem_case_settings(c);
   StoppingLayerScene scene(settings, stopping_layer_spec(c, settings));

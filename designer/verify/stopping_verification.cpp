@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <ostream>
+#include <regex>
+#include <tuple>
 
 #include "designer/bench/bench_run.hpp"
 #include "designer/verify/dem_run_estimate.hpp"
@@ -31,6 +35,48 @@ std::optional<double> measured_thickness(const BenchRun& run) {
       !run.results["layer_thickness"]["value"].is_number())
     return std::nullopt;
   return run.results["layer_thickness"]["value"].get<double>();
+}
+
+// The layers kept below `runs_folder` for this question, whichever band or plan made them:
+// thickness [m] -> flows. A folder counts when its name gives the thickness whose question
+// names that folder again and its run reads back with an answer.
+std::map<double, bool> kept_layers(const std::filesystem::path& runs_folder,
+                                   const std::function<std::filesystem::path(double)>& folder_of,
+                                   const std::function<std::optional<bool>(double)>& answer_of) {
+  std::map<double, bool> kept;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(runs_folder, ec)) return kept;
+  static const std::regex thickness(R"(dem\.stopping_layer_([0-9]+(\.[0-9]+)?)mm)");
+  for (const auto& entry : std::filesystem::directory_iterator(runs_folder, ec)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_directory(ec) || !std::regex_search(name, m, thickness)) continue;
+    const double h = std::stod(m[1].str()) * 1e-3;
+    if (folder_of(h) != entry.path()) continue;
+    if (const auto flows = answer_of(h)) kept[h] = *flows;
+  }
+  return kept;
+}
+
+// The band the bisection starts from: the plan's, narrowed by kept layers to the thinnest that
+// flowed and the thickest below it that came to rest.
+std::pair<double, double> search_band(const StoppingVerificationPlan& plan,
+                                      const std::map<double, bool>& kept) {
+  std::optional<double> rests, flows;
+  for (const auto& [h, f] : kept)
+    if (f && !flows) flows = h;
+  for (const auto& [h, f] : kept)
+    if (!f && (!flows || h < *flows)) rests = h;
+  double low = plan.low, high = plan.high;
+  if (flows) {
+    high = *flows;
+    low = std::min(low, high - 2.0 * plan.tolerance);
+  }
+  if (rests) {
+    low = *rests;
+    if (!flows) high = std::max(high, low + 2.0 * plan.tolerance);
+  }
+  return {std::max(low, plan.floor), std::min(high, plan.ceiling)};
 }
 
 std::string outcomes(const ThresholdBisection& b) {
@@ -107,16 +153,30 @@ StoppingVerification verify_stopping(const std::string& case_file,
   const auto folder_of = [&](double h) {
     return bench_run_folder(runs_folder, layer_run_question(case_file, sets, h), point);
   };
-  // The layers kept cost nothing: those the bisection would read back before its first new one.
+  // The layers kept cost nothing: the bisection replays those it would read back before its
+  // first new one; when it needs a new one, those of any other search at the angle narrow its
+  // band first (made from another band, say), and only the runs still to make are budgeted.
   const auto kept_answer = [&](double h) -> std::optional<bool> {
     const auto saved =
         saved_run_of(layer_run_question(case_file, sets, h), point, ".", folder_of(h));
     return saved ? flows_in(*saved) : std::nullopt;
   };
-  const ThresholdBisection kept = bisect_flow_threshold(plan.low, plan.high, plan.tolerance,
-                                                        kept_answer, plan.floor, plan.ceiling);
+  double low = plan.low, high = plan.high;
+  ThresholdBisection kept =
+      bisect_flow_threshold(low, high, plan.tolerance, kept_answer, plan.floor, plan.ceiling);
   if (kept.end == ThresholdBisection::End::stopped) {
-    const int to_make = std::max(1, plan.runs - static_cast<int>(kept.steps.size()));
+    std::tie(low, high) = search_band(plan, kept_layers(runs_folder, folder_of, kept_answer));
+    if (low != plan.low || high != plan.high) {
+      if (progress)
+        *progress << "verify: layers kept from an earlier search narrow it to " << mm(low) << " .. "
+                  << mm(high) << "\n";
+      kept =
+          bisect_flow_threshold(low, high, plan.tolerance, kept_answer, plan.floor, plan.ceiling);
+    }
+  }
+  if (kept.end == ThresholdBisection::End::stopped) {
+    const int runs = bisection_runs(low, high, plan.tolerance);
+    const int to_make = std::max(1, runs - static_cast<int>(kept.steps.size()));
     const double needed = to_make * plan.seconds / plan.runs;
     if (needed > budget) {
       v.status = "the bisection needs about " + std::to_string(to_make) + " more DEM layers" +
@@ -148,8 +208,8 @@ StoppingVerification verify_stopping(const std::string& case_file,
     }
     return flows;
   };
-  v.bisection = bisect_flow_threshold(plan.low, plan.high, plan.tolerance, judge_at, plan.floor,
-                                      plan.ceiling);
+  v.bisection =
+      bisect_flow_threshold(low, high, plan.tolerance, judge_at, plan.floor, plan.ceiling);
   return v;
 }
 

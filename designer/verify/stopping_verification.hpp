@@ -60,7 +60,8 @@ struct StoppingVerification {
   std::filesystem::path last_run;  // the folder of the last layer judged
 };
 
-// Runs the plan below `runs_folder` (runs already there are read back); the plan's estimate
+// Runs the plan below `runs_folder` (runs already there are read back, and layers kept from any
+// earlier search at this angle narrow the band it starts from); the plan's estimate
 // must fit `budget_seconds`, less what the runs kept already answer, or none is started and
 // the status says what it would take.
 StoppingVerification verify_stopping(const std::string& case_file,

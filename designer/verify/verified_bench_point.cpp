@@ -15,6 +15,14 @@
 namespace feedflow {
 namespace {
 
+std::size_t kept_run_count(const std::filesystem::path& runs) {
+  std::error_code ec;
+  std::size_t n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(runs, ec))
+    n += std::filesystem::exists(entry.path() / "run.json", ec) ? 1 : 0;
+  return n;
+}
+
 // The runs a verification keeps below `runs`: their wall times added up, and their commits
 // (each once, in the order met; a run's own may already name two).
 void add_runs(const std::filesystem::path& runs, BenchRun& into) {
@@ -51,7 +59,9 @@ BenchRun run_or_read_back_verified(const BenchQuestion& q, const BenchPoint& p,
     made = false;
     return std::move(*saved);
   }
-  made = true;
+  // Made when the verification makes a run of its own, not when it reads them all back (say
+  // after the material's calibration changed the point's inputs, not its runs').
+  const std::size_t kept_before = kept_run_count(folder / "verify");
   BenchRun run;
   run.invocation = bench_invocation(q, p);
   run.commit = kCommit;
@@ -83,6 +93,7 @@ BenchRun run_or_read_back_verified(const BenchQuestion& q, const BenchPoint& p,
     run.status = std::string("failed: ") + e.what();
   }
   add_runs(folder / "verify", run);
+  made = kept_run_count(folder / "verify") > kept_before || run.status != "done";
   if (run.status != "interrupted") save_bench_run(folder, run);
   return run;
 }

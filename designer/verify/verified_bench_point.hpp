@@ -10,7 +10,8 @@
 
 namespace feedflow {
 
-// The point's run read back from `folder`, or made and saved (`made` says which); one cut short
+// The point's run read back from `folder`, or made and saved (`made`: a full-rung run was made,
+// not only read back from the verification's kept runs); one cut short
 // by Ctrl-C comes back "interrupted" and unsaved, and the same call continues it.
 BenchRun run_or_read_back_verified(const BenchQuestion& question, const BenchPoint& point,
                                    const std::filesystem::path& source_root,

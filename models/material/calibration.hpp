@@ -59,9 +59,10 @@ struct ArchingCalibration {
 };
 
 // Pouliquen's stopping-thickness law fitted to a rung's deposits on an inclined plane over its
-// inclination: coefficients "theta2" [rad] and "stop_length" [m] (L), theta1 held at the
-// material's (every layer static below it). The chute check uses them instead of the
-// material's [surface_flow] theta2 and L; the drum's flowing layer keeps the material's.
+// inclination: coefficients "theta2" [rad] and "stop_length" [m] (L), and "theta1" [rad] when
+// it was fitted too (else the material's holds: every layer static below it). The chute check
+// uses them instead of the material's [surface_flow] ones; the drum's flowing layer keeps the
+// material's.
 struct ChuteCalibration {
   std::string against;  // "cel" | "dem"
   std::string rung;     // what the references were, in words

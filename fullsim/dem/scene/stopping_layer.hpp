@@ -77,9 +77,9 @@ class StoppingLayerScene {
   bool at_rest() const;
   // The flow clearly goes on: its mean speed down the slope has reached kRunAwaySpeedRatio times
   // the launch speed, on a ramp less steep than the launch's. Measured on 16 of the seed's
-  // layers at 37-42 deg (3-36 mm, 2 s after the tilt): those that came to rest never passed
-  // 1.08 times their launch speed; those that flowed on passed 1.5 times it 0.3-1.6 s after
-  // the tilt, but for one that ran steadily at 0.9-1.16 times it.
+  // layers at 37-42 deg (3-36 mm, run 2 s after the tilt): the 7 that came to rest never passed
+  // 1.09 times their launch speed; 8 of the 9 that flowed on passed 1.5 times it 0.16-1.44 s
+  // after the tilt, the ninth ran steadily (at most 1.16 times it).
   static constexpr double kRunAwaySpeedRatio = 1.5;
   bool runs_away() const;
   // Mass-weighted mean velocity down the slope [m/s].

@@ -27,20 +27,21 @@ using testing::pine_text;
 
 Material read(const std::string& text) { return testing::read_material_text(text); }
 
-// Pouliquen's h_stop with the pine's theta1 (27 deg).
-double h_stop(double theta2, double length, double angle) {
-  const double t1 = std::tan(27 * kDegree);
+// Pouliquen's h_stop, theta1 the pine's 27 deg unless given.
+double h_stop(double theta2, double length, double angle, double theta1 = 27 * kDegree) {
+  const double t1 = std::tan(theta1);
   return length * (std::tan(theta2) - std::tan(angle)) / (std::tan(angle) - t1);
 }
 
 std::vector<StopObservation> made_by(double theta2, double length,
                                      const std::vector<double>& fitted,
-                                     const std::vector<double>& held_out) {
+                                     const std::vector<double>& held_out,
+                                     double theta1 = 27 * kDegree) {
   std::vector<StopObservation> out;
   for (double deg : fitted)
-    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree), 1e-3, false});
+    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree, theta1), 1e-3, false});
   for (double deg : held_out)
-    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree), 1e-3, true});
+    out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree, theta1), 1e-3, true});
   return out;
 }
 
@@ -59,27 +60,48 @@ ChuteCalibration example(double theta2, double length) {
   return c;
 }
 
-// Deposits a law of theta2 = 45 deg and L = 25 mm made at 29.5, 33 and 37 deg: the fit returns
-// both from the pine's published 40 deg and 10 mm, and meets the held-out 31 deg.
+// Deposits a law of theta1 = 25 deg, theta2 = 45 deg and L = 25 mm made at 29.5, 31, 33 and 37
+// deg: the fit returns all three from the pine's published 27 deg, 40 deg and 10 mm, with a
+// spare point for standard errors, and meets the held-out 35 deg.
 TEST(StopLawFit, RecoversTheLawThatMadeItsData) {
-  const auto obs = made_by(45 * kDegree, 25e-3, {29.5, 33, 37}, {31});
+  const auto obs = made_by(45 * kDegree, 25e-3, {29.5, 31, 33, 37}, {35}, 25 * kDegree);
   const StopLawFit f = fit_stop_law(obs, read(pine_text()));
   ASSERT_TRUE(f.failure.empty()) << f.failure;
+  EXPECT_TRUE(f.theta1_fitted);
+  EXPECT_DOUBLE_EQ(in_degrees(f.theta1_before), 27.0);
+  EXPECT_NEAR(in_degrees(f.theta1_after), 25.0, 1e-4);
   EXPECT_NEAR(in_degrees(f.theta2_after), 45.0, 1e-4);
   EXPECT_NEAR(f.length_after * 1e3, 25.0, 1e-3);
-  EXPECT_DOUBLE_EQ(in_degrees(f.theta1), 27.0);  // held
   EXPECT_LT(f.held_out_max_after, 1e-5);
-  EXPECT_GT(f.fit_rms_before, 0.3);            // the published law was far off
-  EXPECT_TRUE(std::isfinite(f.theta2_error));  // three points, two coefficients: a spare one
+  EXPECT_GT(f.fit_rms_before, 0.3);  // the published law was far off
+  EXPECT_TRUE(std::isfinite(f.theta1_error));
+  EXPECT_TRUE(std::isfinite(f.theta2_error));
+  EXPECT_EQ(f.law.coefficients.count("theta1"), 1u);
   for (bool holds : f.band_holds_after) EXPECT_TRUE(holds);
 }
 
-// Two inclinations determine the law exactly (the inversion of reduced_models.md 3.5): no spare
-// point, so no standard error.
+// Three inclinations determine theta1 too, exactly: no spare point, so no standard error.
+TEST(StopLawFit, ThreeInclinationsFitTheta1Exactly) {
+  const auto obs = made_by(44 * kDegree, 20e-3, {33, 37, 42}, {39.5}, 29 * kDegree);
+  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  ASSERT_TRUE(f.failure.empty()) << f.failure;
+  EXPECT_TRUE(f.theta1_fitted);
+  EXPECT_NEAR(in_degrees(f.theta1_after), 29.0, 1e-3);
+  EXPECT_NEAR(in_degrees(f.theta2_after), 44.0, 1e-3);
+  EXPECT_NEAR(f.length_after * 1e3, 20.0, 1e-2);
+  EXPECT_LT(f.held_out_max_after, 1e-4);
+  EXPECT_FALSE(std::isfinite(f.theta1_error));
+}
+
+// Two inclinations determine theta2 and L exactly with theta1 held at the material's (the
+// inversion of reduced_models.md 3.5): no spare point, so no standard error.
 TEST(StopLawFit, TwoInclinationsInvertTheLawExactly) {
   const auto obs = made_by(42 * kDegree, 15e-3, {29.5, 37}, {});
   const StopLawFit f = fit_stop_law(obs, read(pine_text()));
   ASSERT_TRUE(f.failure.empty()) << f.failure;
+  EXPECT_FALSE(f.theta1_fitted);
+  EXPECT_DOUBLE_EQ(in_degrees(f.theta1_after), 27.0);
+  EXPECT_EQ(f.law.coefficients.count("theta1"), 0u);
   EXPECT_NEAR(in_degrees(f.theta2_after), 42.0, 1e-4);
   EXPECT_NEAR(f.length_after * 1e3, 15.0, 1e-3);
   EXPECT_LT(f.fit_rms_after, 1e-6);
@@ -135,6 +157,16 @@ TEST(ChuteCalibrationToml, RoundTripsBesideTheDrumsCalibration) {
   EXPECT_NEAR(again.calibration->chute->law.coefficients.at("theta2"), 41 * kDegree, 1e-15);
   EXPECT_EQ(again.calibration->chute->points, 0u);
   EXPECT_DOUBLE_EQ(again.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
+  EXPECT_EQ(again.calibration->chute->law.coefficients.count("theta1"), 0u);  // held
+  // A fitted theta1 is written in degrees, read back, and the chute check uses it.
+  ChuteCalibration fitted = example(41 * kDegree, 0.02);
+  fitted.law.coefficients["theta1"] = 25 * kDegree;
+  const std::string text = chute_calibration_toml(fitted, {});
+  EXPECT_NE(text.find("theta1 = \"25 deg\""), std::string::npos) << text;
+  const Material third = read(with_calibration(both, text, CalibrationPart::chute));
+  EXPECT_NEAR(third.calibration->chute->law.coefficients.at("theta1"), 25 * kDegree, 1e-15);
+  EXPECT_NEAR(chute_material(third).surface_flow->theta1, 25 * kDegree, 1e-15);
+  EXPECT_NEAR(third.surface_flow->theta1, 27 * kDegree, 1e-15);  // the material's kept
 }
 
 // theta2 outside (0, 90) deg, L not a length or not above 0, an inverted angle range: refused
@@ -166,6 +198,10 @@ TEST(ChuteCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
             "calibration.chute.coefficients.stop_length");
   EXPECT_EQ(key_of(replaced("highest_angle = \"37 deg\"", "highest_angle = \"20 deg\"")),
             "calibration.chute.highest_angle");
+  // A fitted theta1 not below theta2.
+  EXPECT_EQ(key_of(replaced("theta2 = ", "theta1 = \"50 deg\", theta2 = ")),
+            "calibration.chute.coefficients.theta1");
+  EXPECT_EQ(key_of(replaced("theta2 = ", "theta1 = \"20 deg\", theta2 = ")), "accepted");
 }
 
 // The seed plane at 29.5 deg: the calibrated law gives its h_stop (45 deg, 25 mm), the model

@@ -89,7 +89,9 @@ TEST(StoppingVerification, KeptLayersBracketHStopWithoutADemStep) {
   EXPECT_EQ(v.status, "done");
   EXPECT_EQ(v.wall_seconds, 0.0);  // all read back
   ASSERT_EQ(v.bisection.end, ThresholdBisection::End::bracketed);
-  EXPECT_EQ(v.bisection.steps.size(), laid.steps.size());
+  EXPECT_EQ(v.bisection.steps.size(), laid.steps.size());  // replayed as it was made
+  EXPECT_EQ(v.bisection.stops_at, laid.stops_at);
+  EXPECT_EQ(v.bisection.flows_at, laid.flows_at);
   EXPECT_LT(v.bisection.stops_at, 0.009);
   EXPECT_GE(v.bisection.flows_at, 0.009);
   EXPECT_LT(v.bisection.stops_at, *plan.reduced_low);  // widened below the band
@@ -108,6 +110,32 @@ TEST(StoppingVerification, KeptLayersBracketHStopWithoutADemStep) {
   EXPECT_NE(note.find("stopping thickness contradicted on the particle rung"), std::string::npos)
       << note;
   EXPECT_NE(note.find("measured at rest"), std::string::npos) << note;
+  fs::remove_all(runs);
+}
+
+// Layers kept from a search that started elsewhere (a plan of an earlier material, say) still
+// count: a layer resting above the plan's band and a thicker one flowing, within a tolerance,
+// bracket h_stop without a DEM step, as a third that contradicts them (resting thicker than one
+// that flows) and a layer at another angle are passed over.
+TEST(StoppingVerification, LayersOfAnotherSearchNarrowTheBand) {
+  const std::string file = "tests/data/dem_layer_twin.toml";
+  const Case c = load_case(file, std::vector<SetOverride>{});
+  const DesignRecord record = design_check(c, ModelChoices{});
+  const auto plan = plan_stopping_verification(c, record, 0.0);
+  const fs::path runs = scratch("elsewhere");
+  const double rests = plan.high + 2.0 * plan.tolerance, flows = rests + 0.9 * plan.tolerance;
+  testing::lay_down_layer(file, {}, runs, rests, "at rest", rests, 30.0);
+  testing::lay_down_layer(file, {}, runs, flows, "flowing", flows, 30.0);
+  testing::lay_down_layer(file, {}, runs, flows + plan.tolerance, "at rest", flows, 30.0);
+  testing::lay_down_layer(file, {"chute.angle=30deg"}, runs, plan.low, "flowing", plan.low, 30.0);
+  std::ostringstream progress;
+  const StoppingVerification v = verify_stopping(file, {}, plan, 0.0, runs, &progress);
+  EXPECT_EQ(v.status, "done") << progress.str();
+  EXPECT_EQ(v.wall_seconds, 0.0);
+  ASSERT_EQ(v.bisection.end, ThresholdBisection::End::bracketed) << progress.str();
+  EXPECT_NEAR(v.bisection.stops_at, rests, 1e-9);
+  EXPECT_NEAR(v.bisection.flows_at, flows, 1e-9);
+  EXPECT_NE(progress.str().find("narrow it to"), std::string::npos) << progress.str();
   fs::remove_all(runs);
 }
 
