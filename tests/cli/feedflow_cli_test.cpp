@@ -226,8 +226,6 @@ TEST_F(FeedflowCli, DesignPrintsResultTable) {
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
 }
 
-}  // namespace
-
 // `feedflow simulate <small hopper case> --solver dem --time 0.3s`: exit 0, results.json with
 // the DEM results on rung L3 beside the reduced model's, timeseries.csv with the discharged
 // mass, the snapshots' XDMF sidecar and the checkpoint.
@@ -247,3 +245,5 @@ TEST_F(FeedflowCli, SimulateSmallHopperWithDemWritesL3Results) {
   EXPECT_TRUE(fs::exists(dir_ / "sim/checkpoint.h5"));
   EXPECT_TRUE(fs::exists(dir_ / "sim/particles.xdmf"));
 }
+
+}  // namespace

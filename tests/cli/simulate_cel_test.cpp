@@ -110,8 +110,6 @@ TEST_F(SimulateCel, CellsTooCoarseForTheOutletAreRefused) {
   EXPECT_FALSE(fs::exists(dir_ / "o"));
 }
 
-}  // namespace
-
 // [cel] remap_order, material_flux and mixed_cells reach the solver: the plan and the result's
 // model name say second order and PLIC, the plan says void first; an unknown order is refused
 // as bad input (exit 2) naming the key.
@@ -157,8 +155,6 @@ TEST_F(SimulateCel, HopperSectionReachesThePlanAndTheResults) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("cel.hopper_section"), std::string::npos);
 }
-
-namespace {
 
 // The CEL drum reports its regime from the measured bed state, as the particle rung does: at
 // 50 rpm on 10 mm cells over 3 s the bed cascades (the seed's label at 50 rpm; measured: its mean

@@ -42,7 +42,7 @@ class SimulateRanks : public ::testing::Test {
   fs::path dir_;
 };
 
-std::size_t count(const std::string& text, const std::string& what) {
+std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
@@ -58,8 +58,8 @@ TEST_F(SimulateRanks, DemDrumSharedByTwoRanksIsOneRun) {
   ASSERT_EQ(alone.exit_code, 0) << alone.err;
   ASSERT_EQ(on_two_ranks(kDrum + "--time 0.6s --out two", "two"), 0) << slurp(dir_ / "two.err");
   const std::string log = slurp(dir_ / "two.out");
-  EXPECT_EQ(count(log, "the DEM run shared among 2 MPI ranks"), 1u) << log;
-  EXPECT_EQ(count(log, "Verdict:"), 1u);
+  EXPECT_EQ(occurrences(log, "the DEM run shared among 2 MPI ranks"), 1u) << log;
+  EXPECT_EQ(occurrences(log, "Verdict:"), 1u);
   EXPECT_NE(log.find("own particles"), std::string::npos);  // the balance line of the block
   const auto one = results("alone"), two = results("two");
   const double n1 = one.at("particles").at("value"), n2 = two.at("particles").at("value");
@@ -85,7 +85,7 @@ TEST_F(SimulateRanks, DemDrumSharedByTwoRanksIsOneRun) {
 TEST_F(SimulateRanks, CelUnderTwoRanksRefusesWithTheWayToShareRuns) {
   EXPECT_EQ(on_two_ranks("simulate cases/pilot_hopper.toml --solver cel --out s", "s"), 2);
   const std::string err = slurp(dir_ / "s.err");
-  EXPECT_EQ(count(err, "feedflow: error"), 1u) << err;
+  EXPECT_EQ(occurrences(err, "feedflow: error"), 1u) << err;
   EXPECT_NE(err.find("mpirun"), std::string::npos) << err;
   EXPECT_NE(err.find("feedflow sweep --rung L2"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(dir_ / "s"));

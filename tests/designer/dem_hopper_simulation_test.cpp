@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
+fs::path hopper_scratch(const std::string& name) {
   const fs::path d = fs::temp_directory_path() /
                      ("feedflow_demhopper_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(d);
@@ -52,7 +52,7 @@ const char* kTwin = "tests/data/dem_hopper_twin.toml";
 // twin's coarse grains (W/d = 10) cost Beverloo's (1 - 1.5 d / W)^1.5 = 0.79 against the reduced
 // model's fine grain: 0.57 expected, 0.53 measured (3.24 against 6.10 kg/s on 2026-12-05).
 TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
-  const fs::path out = scratch("flow");
+  const fs::path out = hopper_scratch("flow");
   const SimulationOutcome o = simulate(kTwin, {}, out);
   const Estimate* q = find(o.record, "mass_flow_rate");
   const Estimate* reduced = find(o.record, "mass_flow_rate_reduced_model");
@@ -83,7 +83,7 @@ TEST(DemHopperSimulation, TwinFlowsAtSixtyMillimetres) {
 // keeps flowing and the verdict fails. The arch needs the layer's freedom across the slab:
 // held "planar", the same twin empties (RECORD.md).
 TEST(DemHopperSimulation, TwinArchesAtTwentyMillimetres) {
-  const fs::path out = scratch("arch");
+  const fs::path out = hopper_scratch("arch");
   const SimulationOutcome o = simulate(kTwin, {{"hopper.outlet_width", "20 mm"}}, out);
   EXPECT_EQ(std::get<std::string>(find(o.record, "arching")->value), "arched");
   EXPECT_EQ(o.record.verdict.status, VerdictStatus::fail);
@@ -101,8 +101,8 @@ TEST(DemHopperSimulation, TwinArchesAtTwentyMillimetres) {
 // 0.12 s: every particle's position, velocity and spin, the sink's book, the blow-up guard's
 // energy book and the time series are the same bits.
 TEST(DemHopperSimulation, RestartContinuesBitIdentically) {
-  const fs::path a = scratch("restart_a"), b = scratch("restart_b"), c = scratch("restart_c"),
-                 d = scratch("restart_d");
+  const fs::path a = hopper_scratch("restart_a"), b = hopper_scratch("restart_b"),
+                 c = hopper_scratch("restart_c"), d = hopper_scratch("restart_d");
   simulate(kTwin, {}, a, 0.05);
   const SimulationOutcome straight = simulate(kTwin, {}, b, 0.12, a / "checkpoint.h5");
   simulate(kTwin, {}, c, 0.08, a / "checkpoint.h5");
@@ -130,7 +130,7 @@ TEST(DemHopperSimulation, RestartContinuesBitIdentically) {
 // it (Hertz 4.20, the seed's law at P-W friction 0.2 4.03 kg/s against the CEL's 5.76 and the
 // reduced 6.10 kg/s, RECORD.md). Hours of wall time: label `long`.
 TEST(DemHopperSimulation, LONG_PilotHopperFlowsAtSixtyMillimetres) {
-  const fs::path out = scratch("pilot");
+  const fs::path out = hopper_scratch("pilot");
   const SimulationOutcome o = simulate("cases/pilot_hopper.toml", {}, out);
   const Estimate* q = find(o.record, "mass_flow_rate");
   const Estimate* reduced = find(o.record, "mass_flow_rate_reduced_model");

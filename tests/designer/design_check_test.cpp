@@ -28,7 +28,7 @@ std::string text(const DesignRecord& r, const std::string& name) {
   return std::get<std::string>(result(r, name).value);
 }
 
-std::string reasons(const DesignRecord& r) {
+std::string record_reasons(const DesignRecord& r) {
   std::string s;
   for (const auto& x : r.verdict.reasons) s += x + "\n";
   return s;
@@ -43,10 +43,11 @@ TEST(HopperCheck, PilotHopperReproducesTheSeed) {
   EXPECT_GT(bc, 0.020);
   EXPECT_LT(bc, 0.060);
   EXPECT_EQ(result(r, "critical_outlet_width").unit, "m");
-  EXPECT_EQ(r.verdict.status, VerdictStatus::pass) << reasons(r);
+  EXPECT_EQ(r.verdict.status, VerdictStatus::pass) << record_reasons(r);
   const DesignRecord narrow = check("cases/pilot_hopper.toml", {{"hopper.outlet_width", "20 mm"}});
-  EXPECT_EQ(narrow.verdict.status, VerdictStatus::fail) << reasons(narrow);
-  EXPECT_NE(reasons(narrow).find("the outlet arches"), std::string::npos) << reasons(narrow);
+  EXPECT_EQ(narrow.verdict.status, VerdictStatus::fail) << record_reasons(narrow);
+  EXPECT_NE(record_reasons(narrow).find("the outlet arches"), std::string::npos)
+      << record_reasons(narrow);
 }
 
 // Every numeric estimate carries a band that contains its value, and the charts carry data.
@@ -114,7 +115,7 @@ TEST(HopperCheck, CohesionTrendAndCohesionlessLimit) {
   EXPECT_EQ(text(free, "arching"), "no cohesive arch");
   EXPECT_EQ(value(free, "critical_outlet_width"), 0.0);
   EXPECT_NEAR(value(free, "mechanical_arching_width"), 8 * 1.79e-3, 1e-9);
-  EXPECT_EQ(free.verdict.status, VerdictStatus::pass) << reasons(free);
+  EXPECT_EQ(free.verdict.status, VerdictStatus::pass) << record_reasons(free);
 }
 
 // A flow function above the flow-factor line everywhere: no gravity outlet prevents arching.
@@ -122,7 +123,7 @@ TEST(HopperCheck, NoGravityOutletFails) {
   const DesignRecord r = check("cases/pilot_hopper.toml", {{"material.flow_properties.ff_slope", "0.95"}});
   EXPECT_EQ(text(r, "arching"), "no gravity outlet");
   EXPECT_EQ(r.verdict.status, VerdictStatus::fail);
-  EXPECT_NE(reasons(r).find("flow aids"), std::string::npos) << reasons(r);
+  EXPECT_NE(record_reasons(r).find("flow aids"), std::string::npos) << record_reasons(r);
 }
 
 // Past the mass-flow boundary the pattern is funnel, and a mass-flow requirement fails.
@@ -133,7 +134,7 @@ TEST(HopperCheck, FlatWallsGiveFunnelFlow) {
                                                            {"hopper.fill_height", "2 m"}});
   EXPECT_EQ(text(r, "flow_pattern"), "funnel");
   EXPECT_EQ(r.verdict.status, VerdictStatus::fail);
-  EXPECT_NE(reasons(r).find("mass flow required"), std::string::npos) << reasons(r);
+  EXPECT_NE(record_reasons(r).find("mass flow required"), std::string::npos) << record_reasons(r);
 }
 
 // The required throughput is judged against the discharge band.
@@ -244,8 +245,8 @@ TEST(ChuteCheck, SeedAnglesFlowAndThinnerAtSteeper) {
   const std::vector<std::string> fast{"chute.deposit=none"};
   const DesignRecord low = check("cases/inclined_plane_29_5.toml", {}, fast);
   const DesignRecord steep = check("cases/inclined_plane_37.toml", {}, fast);
-  EXPECT_EQ(low.verdict.status, VerdictStatus::pass) << reasons(low);
-  EXPECT_EQ(steep.verdict.status, VerdictStatus::pass) << reasons(steep);
+  EXPECT_EQ(low.verdict.status, VerdictStatus::pass) << record_reasons(low);
+  EXPECT_EQ(steep.verdict.status, VerdictStatus::pass) << record_reasons(steep);
   EXPECT_GT(value(low, "stopping_thickness"), value(steep, "stopping_thickness"));
   EXPECT_NEAR(value(low, "stopping_thickness"), 191.7e-3, 0.1e-3);
   EXPECT_NEAR(value(steep, "stopping_thickness"), 25.87e-3, 0.05e-3);
@@ -316,8 +317,9 @@ TEST(DrumCheck, SeedRegimesAndRisingAngle) {
 TEST(DrumCheck, RequiredRegimeVerdict) {
   EXPECT_EQ(check("cases/rotating_drum_20rpm.toml").verdict.status, VerdictStatus::pass);
   const DesignRecord fast = check("cases/rotating_drum_20rpm.toml", {{"drum.speed", "50 rpm"}});
-  EXPECT_EQ(fast.verdict.status, VerdictStatus::fail) << reasons(fast);
-  EXPECT_NE(reasons(fast).find("rolling required"), std::string::npos) << reasons(fast);
+  EXPECT_EQ(fast.verdict.status, VerdictStatus::fail) << record_reasons(fast);
+  EXPECT_NE(record_reasons(fast).find("rolling required"), std::string::npos)
+      << record_reasons(fast);
 }
 
 }  // namespace

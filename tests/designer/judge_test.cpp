@@ -25,7 +25,7 @@ const Finding* finding_on(const Verdict& v, const std::string& quantity) {
   return nullptr;
 }
 
-std::string reasons(const Verdict& v) {
+std::string verdict_reasons(const Verdict& v) {
   std::string s;
   for (const auto& r : v.reasons) s += r + "\n";
   return s;
@@ -39,9 +39,9 @@ TEST(Judge, ArchedHopperFailsNamingArching) {
                          {"arching", label("arched")},
                          {"flow_pattern", label("funnel")}};
   const Verdict v = judge(c, dem);
-  EXPECT_EQ(v.status, VerdictStatus::fail) << reasons(v);
+  EXPECT_EQ(v.status, VerdictStatus::fail) << verdict_reasons(v);
   const Finding* arching = finding_on(v, "arching");
-  ASSERT_NE(arching, nullptr) << reasons(v);
+  ASSERT_NE(arching, nullptr) << verdict_reasons(v);
   EXPECT_EQ(arching->status, VerdictStatus::fail);
   const Finding* pattern = finding_on(v, "flow_pattern");
   ASSERT_NE(pattern, nullptr);
@@ -56,8 +56,9 @@ TEST(Judge, FlowingHopperPassesOnWhatItMeasured) {
                          {"arching", label("flowing")},
                          {"flow_pattern", label("mass")}};
   const Verdict v = judge(c, dem);
-  EXPECT_EQ(v.status, VerdictStatus::pass) << reasons(v);
-  EXPECT_EQ(v.findings.size(), 2u) << reasons(v);  // arching and flow pattern; no throughput target
+  EXPECT_EQ(v.status, VerdictStatus::pass) << verdict_reasons(v);
+  EXPECT_EQ(v.findings.size(), 2u)
+      << verdict_reasons(v);  // arching and flow pattern; no throughput target
   EXPECT_EQ(finding_on(v, "critical_outlet_width"), nullptr);
   EXPECT_EQ(finding_on(v, "mechanical_arching_width"), nullptr);
 }
@@ -68,7 +69,7 @@ TEST(Judge, ThroughputBandBelowTheRequirement) {
   Case c = load_case("cases/pilot_hopper.toml");
   c.design.required_throughput = 3.0;
   const Verdict inside = judge(c, {{"mass_flow_rate", number(3.2, "kg/s", 2.8, 3.6)}});
-  EXPECT_EQ(inside.status, VerdictStatus::marginal) << reasons(inside);
+  EXPECT_EQ(inside.status, VerdictStatus::marginal) << verdict_reasons(inside);
   const Finding* q = finding_on(inside, "mass_flow_rate");
   ASSERT_NE(q, nullptr);
   EXPECT_EQ(q->unit, "kg/s");
@@ -78,7 +79,7 @@ TEST(Judge, ThroughputBandBelowTheRequirement) {
   EXPECT_DOUBLE_EQ(*q->limit, 3.0);
   EXPECT_NE(q->text.find("3 kg/s"), std::string::npos) << q->text;
   const Verdict below = judge(c, {{"mass_flow_rate", number(2.5, "kg/s", 2.2, 2.8)}});
-  EXPECT_EQ(below.status, VerdictStatus::fail) << reasons(below);
+  EXPECT_EQ(below.status, VerdictStatus::fail) << verdict_reasons(below);
   EXPECT_EQ(finding_on(below, "mass_flow_rate")->status, VerdictStatus::fail);
 }
 
@@ -88,14 +89,14 @@ TEST(Judge, MeasuredRegimeOtherThanRequiredFails) {
   const Case c = load_case("cases/rotating_drum_20rpm.toml");  // rolling required
   const Verdict v = judge(c, {{"dynamic_angle_of_repose", number(38.0, "deg", 36.0, 40.0)},
                               {"regime", label("cascading")}});
-  EXPECT_EQ(v.status, VerdictStatus::fail) << reasons(v);
+  EXPECT_EQ(v.status, VerdictStatus::fail) << verdict_reasons(v);
   ASSERT_NE(finding_on(v, "regime"), nullptr);
   EXPECT_EQ(finding_on(v, "regime")->status, VerdictStatus::fail);
-  EXPECT_NE(reasons(v).find("rolling required"), std::string::npos) << reasons(v);
+  EXPECT_NE(verdict_reasons(v).find("rolling required"), std::string::npos) << verdict_reasons(v);
   const Verdict rolling = judge(c, {{"regime", label("rolling")}});
-  EXPECT_EQ(rolling.status, VerdictStatus::pass) << reasons(rolling);
+  EXPECT_EQ(rolling.status, VerdictStatus::pass) << verdict_reasons(rolling);
   const Verdict unmeasured = judge(c, {{"regime", label("not measured")}});
-  EXPECT_EQ(unmeasured.status, VerdictStatus::unknown) << reasons(unmeasured);
+  EXPECT_EQ(unmeasured.status, VerdictStatus::unknown) << verdict_reasons(unmeasured);
   EXPECT_EQ(unmeasured.findings.size(), 1u);
 }
 
@@ -109,7 +110,7 @@ TEST(Judge, SimulatedDepositAgainstTheAllowedThickness) {
   };
   EXPECT_EQ(judge(c, deposit(3e-3, 2e-3, 4e-3)).status, VerdictStatus::pass);
   const Verdict inside = judge(c, deposit(4e-3, 3e-3, 6e-3));
-  EXPECT_EQ(inside.status, VerdictStatus::marginal) << reasons(inside);
+  EXPECT_EQ(inside.status, VerdictStatus::marginal) << verdict_reasons(inside);
   EXPECT_DOUBLE_EQ(*finding_on(inside, "deposit_thickness_mid_ramp")->limit, 5e-3);
   EXPECT_EQ(judge(c, deposit(6e-3, 4e-3, 7e-3)).status, VerdictStatus::fail);
 }
@@ -119,7 +120,7 @@ TEST(Judge, SaysNothingOfAbsentQuantities) {
   for (const char* file : {"cases/pilot_hopper.toml", "cases/inclined_plane_37.toml", "cases/rotating_drum_20rpm.toml"}) {
     const Verdict v = judge(load_case(file), {});
     EXPECT_EQ(v.status, VerdictStatus::unknown) << file;
-    EXPECT_TRUE(v.reasons.empty()) << file << ": " << reasons(v);
+    EXPECT_TRUE(v.reasons.empty()) << file << ": " << verdict_reasons(v);
   }
 }
 
@@ -130,7 +131,7 @@ TEST(Judge, ReducedModelEstimatesGiveTheShippedVerdicts) {
                            "cases/rotating_drum_20rpm.toml"}) {
     const Case c = load_case(file);
     const DesignRecord r = design_check(c);
-    EXPECT_EQ(r.verdict.status, VerdictStatus::pass) << file << "\n" << reasons(r.verdict);
+    EXPECT_EQ(r.verdict.status, VerdictStatus::pass) << file << "\n" << verdict_reasons(r.verdict);
     EXPECT_EQ(judge(c, r.results).status, r.verdict.status) << file;
     for (const auto& f : r.verdict.findings) {
       if (!f.status) continue;

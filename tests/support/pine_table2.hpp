@@ -26,4 +26,13 @@ inline DemContactParameters pine_table2_contact(double friction, double rolling_
 inline DemContactParameters pine_table2_particle_particle() { return pine_table2_contact(0.5, 0.8); }
 inline DemContactParameters pine_table2_particle_wall() { return pine_table2_contact(0.2, 0.6); }
 
+// Spheres of `radius` [m] and Table 2's density with both columns.
+inline DemParameters pine_table2(double radius) {
+  DemParameters dem;
+  dem.particle = {radius, 390.0};
+  dem.particle_particle = pine_table2_particle_particle();
+  dem.particle_wall = pine_table2_particle_wall();
+  return dem;
+}
+
 }  // namespace feedflow::testing

@@ -39,7 +39,7 @@ double width_with(double scale, const Hopper& h, const std::string& row = "envel
       .critical_width;
 }
 
-const HopperMaterial& pine() {
+const HopperMaterial& pine_arching() {
   static const HopperMaterial m = HopperMaterial::of(testing::read_material_text(pine_text()));
   return m;
 }
@@ -53,7 +53,7 @@ TEST(ArchingFit, RecoversTheStrengthThatMadeItsBrackets) {
     const double w = width_with(1.4, pilot_at(deg));
     obs.push_back({pilot_at(deg), w / 1.1, w * 1.1, deg == 30.0});
   }
-  const auto fits = fit_arching(obs, pine());
+  const auto fits = fit_arching(obs, pine_arching());
   ASSERT_EQ(fits.size(), critical_outlet_models().rows.size());
   const ArchingRowFit& f = fits.front();
   ASSERT_EQ(f.row, &critical_outlet_models().default_row());
@@ -72,7 +72,7 @@ TEST(ArchingFit, RecoversTheStrengthThatMadeItsBrackets) {
 TEST(ArchingFit, TheScaleRangeEndsWhereBcLeavesTheBracket) {
   const Hopper h = pilot_at(30.0);
   const std::vector<ArchingObservation> obs{{h, 0.03133, 0.04218, false}};
-  for (const auto& f : fit_arching(obs, pine())) {
+  for (const auto& f : fit_arching(obs, pine_arching())) {
     const std::string row(f.row->name);
     EXPECT_NEAR(width_with(f.scale_low, h, row), 0.03133, 1e-8) << row;
     EXPECT_NEAR(width_with(f.scale_high, h, row), 0.04218, 1e-8) << row;
@@ -82,13 +82,15 @@ TEST(ArchingFit, TheScaleRangeEndsWhereBcLeavesTheBracket) {
 
 // A bracket that flows below where it arches, or points of two geometries, are refused.
 TEST(ArchingFit, RefusesWhatIsNoBracket) {
-  EXPECT_THROW(fit_arching({{pilot_at(30.0), 0.04, 0.03, false}}, pine()), std::invalid_argument);
+  EXPECT_THROW(fit_arching({{pilot_at(30.0), 0.04, 0.03, false}}, pine_arching()),
+               std::invalid_argument);
   Hopper cone = pilot_at(30.0);
   cone.shape = "conical";
   EXPECT_THROW(
-      fit_arching({{pilot_at(30.0), 0.03, 0.04, false}, {cone, 0.03, 0.04, false}}, pine()),
+      fit_arching({{pilot_at(30.0), 0.03, 0.04, false}, {cone, 0.03, 0.04, false}}, pine_arching()),
       std::invalid_argument);
-  EXPECT_THROW(fit_arching({{pilot_at(30.0), 0.03, 0.04, true}}, pine()), std::invalid_argument);
+  EXPECT_THROW(fit_arching({{pilot_at(30.0), 0.03, 0.04, true}}, pine_arching()),
+               std::invalid_argument);
 }
 
 const std::filesystem::path kRecord =
@@ -125,7 +127,7 @@ TEST(ArchingRecords, AVerifiedDesignReadsIntoItsBracket) {
   EXPECT_THROW(read_arching_record(kRecord, "dem", "loblolly_pine", cone), InputError);
 }
 
-ArchingCalibration example(double scale) {
+ArchingCalibration arching_example(double scale) {
   ArchingCalibration a;
   a.against = "dem";
   a.rung = "L3 DEM (hysteretic_nonlinear2 + k_nc cohesion)";
@@ -149,7 +151,7 @@ TEST(ArchingCalibrationToml, RoundTripsBesideTheDischargeCalibration) {
       "density_model = \"compressible\"\ncommit = \"c\"\ndate = \"d\"\n"
       "[calibration.discharge.johanson]\ncoefficients = { factor = 1.83 }\n";
   const std::string point_text =
-      arching_calibration_toml(example(1.1626858527697574),
+      arching_calibration_toml(arching_example(1.1626858527697574),
                                {{30 * kDegree, 8.5 * kDegree, 0.03133, 0.04218, false, "record"}});
   std::string text =
       with_calibration(with_calibration(pine_text(), discharge_part, CalibrationPart::hopper),
@@ -162,15 +164,15 @@ TEST(ArchingCalibrationToml, RoundTripsBesideTheDischargeCalibration) {
   EXPECT_EQ(m.calibration->arching->points, 1u);
   EXPECT_EQ(m.calibration->arching->flow_factor, "enstad");
   EXPECT_DOUBLE_EQ(m.calibration->discharge.at("johanson").coefficients.at("factor"), 1.83);
-  text =
-      with_calibration(text, arching_calibration_toml(example(0.9), {}), CalibrationPart::arching);
+  text = with_calibration(text, arching_calibration_toml(arching_example(0.9), {}),
+                          CalibrationPart::arching);
   const Material again = testing::read_material_text(text);
   EXPECT_DOUBLE_EQ(
       again.calibration->arching->rows.at("envelope").coefficients.at("strength_scale"), 0.9);
   EXPECT_EQ(again.calibration->arching->points, 0u);
   EXPECT_DOUBLE_EQ(again.calibration->discharge.at("johanson").coefficients.at("factor"), 1.83);
   const Material alone = testing::read_material_text(with_calibration(
-      pine_text(), arching_calibration_toml(example(1.2), {}), CalibrationPart::arching));
+      pine_text(), arching_calibration_toml(arching_example(1.2), {}), CalibrationPart::arching));
   EXPECT_TRUE(alone.calibration->discharge.empty());
   EXPECT_DOUBLE_EQ(
       alone.calibration->arching->rows.at("envelope").coefficients.at("strength_scale"), 1.2);
@@ -179,8 +181,8 @@ TEST(ArchingCalibrationToml, RoundTripsBesideTheDischargeCalibration) {
 // A scale out of [0.01, 100], an unknown row and an unknown flow-factor row are refused naming
 // the key.
 TEST(ArchingCalibrationToml, BrokenTablesAreRefusedNamingTheKey) {
-  const std::string good = with_calibration(pine_text(), arching_calibration_toml(example(1.2), {}),
-                                            CalibrationPart::arching);
+  const std::string good = with_calibration(
+      pine_text(), arching_calibration_toml(arching_example(1.2), {}), CalibrationPart::arching);
   const auto key_of = [&](const std::string& from, const std::string& to) {
     std::string text = good;
     text.replace(text.find(from), from.size(), to);
@@ -202,7 +204,7 @@ TEST(ArchingCalibrationToml, BrokenTablesAreRefusedNamingTheKey) {
 // flow function (the calibration was made on a wedge).
 TEST(ArchingCalibration, DesignUsesItForTheCalibratedGeometryOnly) {
   Material m = testing::read_material_text(with_calibration(
-      pine_text(), arching_calibration_toml(example(1.2), {}), CalibrationPart::arching));
+      pine_text(), arching_calibration_toml(arching_example(1.2), {}), CalibrationPart::arching));
   const HopperMaterial calibrated = HopperMaterial::of(m);
   const Hopper wedge = pilot_at(30.0);
   const auto nominal = [&](const HopperMaterial& hm, const Hopper& h) {
@@ -211,12 +213,13 @@ TEST(ArchingCalibration, DesignUsesItForTheCalibratedGeometryOnly) {
   };
   const HopperEvaluation e = nominal(calibrated, wedge);
   EXPECT_NEAR(e.critical_width, width_with(1.2, wedge), 1e-12);
-  EXPECT_GT(e.critical_width, nominal(pine(), wedge).critical_width * 1.05);
+  EXPECT_GT(e.critical_width, nominal(pine_arching(), wedge).critical_width * 1.05);
   EXPECT_NE(e.critical_model.find("sigma_c x 1.2 calibrated against L3 DEM"), std::string::npos)
       << e.critical_model;
   Hopper cone = wedge;
   cone.shape = "conical";
-  EXPECT_DOUBLE_EQ(nominal(calibrated, cone).critical_width, nominal(pine(), cone).critical_width);
+  EXPECT_DOUBLE_EQ(nominal(calibrated, cone).critical_width,
+                   nominal(pine_arching(), cone).critical_width);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ namespace {
 
 using testing::pine_text;
 
-Calibration example(double johanson_factor) {
+Calibration discharge_example(double johanson_factor) {
   Calibration c;
   c.against = "cel";
   c.rung = "L2 CEL-FEM, 3 and 6 cells across the half outlet";
@@ -39,11 +39,12 @@ Calibration example(double johanson_factor) {
 const std::vector<CalibrationPointRecord> kPoints = {{0.04, 15 * kDegree, 1.5, 0.1, false, "CEL two levels"},
                                                      {0.045, 25 * kDegree, 1.9, 0.12, true, "CEL two levels"}};
 
-Material read(const std::string& text) { return testing::read_material_text(text); }
+using testing::read_material_text;
 
 // Written, read back: the same coefficients (bit for bit), figures, provenance and points.
 TEST(CalibrationToml, CalibratedMaterialRoundTrips) {
-  const Material m = read(with_calibration(pine_text(), calibration_toml(example(1.83), kPoints)));
+  const Material m = read_material_text(
+      with_calibration(pine_text(), calibration_toml(discharge_example(1.83), kPoints)));
   ASSERT_TRUE(m.calibration);
   const Calibration& c = *m.calibration;
   EXPECT_EQ(c.against, "cel");
@@ -56,18 +57,21 @@ TEST(CalibrationToml, CalibratedMaterialRoundTrips) {
   EXPECT_DOUBLE_EQ(c.discharge.at("beverloo").coefficients.at("k"), 0.25);
   EXPECT_EQ(c.discharge.at("johanson").figures.at("held_out_max_error"), "6.1 %");
   // Everything else of the material is as the file without calibration says.
-  const Material plain = read(pine_text());
+  const Material plain = read_material_text(pine_text());
   EXPECT_EQ(m.sources, plain.sources);
   EXPECT_DOUBLE_EQ(m.bulk.density, plain.bulk.density);
 }
 
 // A second calibration replaces the first whole; the rest of the text is kept byte for byte.
 TEST(CalibrationToml, ASecondCalibrationReplacesTheFirst) {
-  const std::string once = with_calibration(pine_text(), calibration_toml(example(1.83), kPoints));
-  const std::string twice = with_calibration(once, calibration_toml(example(2.5), {}));
+  const std::string once =
+      with_calibration(pine_text(), calibration_toml(discharge_example(1.83), kPoints));
+  const std::string twice = with_calibration(once, calibration_toml(discharge_example(2.5), {}));
   EXPECT_EQ(twice.find("1.83"), std::string::npos);
-  EXPECT_EQ(read(twice).calibration->points, 0u);
-  EXPECT_DOUBLE_EQ(read(twice).calibration->discharge.at("johanson").coefficients.at("factor"), 2.5);
+  EXPECT_EQ(read_material_text(twice).calibration->points, 0u);
+  EXPECT_DOUBLE_EQ(
+      read_material_text(twice).calibration->discharge.at("johanson").coefficients.at("factor"),
+      2.5);
   const std::string head = twice.substr(0, twice.find("# Written by `feedflow calibrate`"));
   std::string original = pine_text();
   while (!original.empty() && original.back() == '\n') original.pop_back();
@@ -79,13 +83,13 @@ TEST(CalibrationToml, ASecondCalibrationReplacesTheFirst) {
 TEST(CalibrationToml, BrokenTablesAreRefusedNamingTheKey) {
   const auto key_of = [](const std::string& calibration) {
     try {
-      read(pine_text() + "\n" + calibration);
+      read_material_text(pine_text() + "\n" + calibration);
     } catch (const InputError& e) {
       return e.key();
     }
     return std::string("accepted");
   };
-  std::string good = calibration_toml(example(1.5), {});
+  std::string good = calibration_toml(discharge_example(1.5), {});
   auto replaced = [&](const std::string& from, const std::string& to) {
     std::string s = good;
     s.replace(s.find(from), from.size(), to);
@@ -103,9 +107,10 @@ TEST(CalibrationToml, BrokenTablesAreRefusedNamingTheKey) {
 // calibration in the model text and the assumptions; a conical hopper keeps the published rate.
 TEST(CalibrationToml, DesignUsesTheCalibrationAndSaysSo) {
   Case c = load_case("cases/pilot_hopper.toml");
-  c.material = read(pine_text());
+  c.material = read_material_text(pine_text());
   const DesignRecord before = design_check(c);
-  c.material = read(with_calibration(pine_text(), calibration_toml(example(1.83), kPoints)));
+  c.material = read_material_text(
+      with_calibration(pine_text(), calibration_toml(discharge_example(1.83), kPoints)));
   const DesignRecord after = design_check(c);
   const Estimate& q0 = *find_estimate(before.results, "mass_flow_rate");
   const Estimate& q1 = *find_estimate(after.results, "mass_flow_rate");
@@ -127,7 +132,7 @@ TEST(CalibrationToml, DesignUsesTheCalibrationAndSaysSo) {
 // A calibration whose rows met the full rung differently on the held-out points (the shipped
 // pine's figures: Johanson 18.1 %, Brown 1.38 %, Rose-Tanaka 3.02 %).
 Calibration ranked() {
-  Calibration c = example(2.145);
+  Calibration c = discharge_example(2.145);
   c.discharge.erase("beverloo");
   c.discharge["johanson"].figures = {{"fit_rms_error", "23.9 %"}, {"held_out_max_error", "18.1 %"}};
   c.discharge["brown"].coefficients = {{"factor", 1.224}};
@@ -151,7 +156,8 @@ bool says(const DesignRecord& r, const std::string& text) {
 // replacement.
 TEST(CalibrationToml, DesignTakesTheCalibratedRowThatMetTheFullRungBest) {
   Case c = load_case("cases/pilot_hopper.toml");
-  c.material = read(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
+  c.material =
+      read_material_text(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
   const std::vector<std::string> brown{"hopper.discharge=brown"}, johanson{"hopper.discharge=johanson"};
   const DesignRecord chosen = design_check(c);
   const DesignRecord asked_brown = design_check(c, ModelChoices::parse(brown));
@@ -171,13 +177,14 @@ TEST(CalibrationToml, DesignTakesTheCalibratedRowThatMetTheFullRungBest) {
 // unwidened band); without the figures the band is not widened.
 TEST(CalibrationToml, RateBandSpansTheCalibratedRowsMeasuredError) {
   Case c = load_case("cases/pilot_hopper.toml");
-  c.material = read(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
+  c.material =
+      read_material_text(with_calibration(pine_text(), calibration_toml(ranked(), kPoints)));
   const Estimate spanned = rate_of(design_check(c));
   EXPECT_TRUE(says(design_check(c), "the rate's band spans the larger, +-8.04 %"));
 
   Calibration silent = ranked();
   for (auto& [name, row] : silent.discharge) row.figures.clear();
-  c.material = read(with_calibration(pine_text(), calibration_toml(silent, {})));
+  c.material = read_material_text(with_calibration(pine_text(), calibration_toml(silent, {})));
   const std::vector<std::string> brown{"hopper.discharge=brown"};
   const Estimate unwidened = rate_of(design_check(c, ModelChoices::parse(brown)));
   EXPECT_DOUBLE_EQ(std::get<double>(unwidened.value), std::get<double>(spanned.value));
@@ -193,7 +200,7 @@ TEST(CalibrationToml, FitErrorRanksTheRowsWhenNothingWasHeldOut) {
   Calibration fit_only = ranked();
   for (auto& [name, row] : fit_only.discharge) row.figures.erase("held_out_max_error");
   fit_only.discharge["rose_tanaka"].figures["fit_rms_error"] = "2 %";
-  c.material = read(with_calibration(pine_text(), calibration_toml(fit_only, {})));
+  c.material = read_material_text(with_calibration(pine_text(), calibration_toml(fit_only, {})));
   const std::vector<std::string> rose{"hopper.discharge=rose_tanaka"};
   EXPECT_DOUBLE_EQ(std::get<double>(rate_of(design_check(c)).value),
                    std::get<double>(rate_of(design_check(c, ModelChoices::parse(rose))).value));
@@ -201,7 +208,7 @@ TEST(CalibrationToml, FitErrorRanksTheRowsWhenNothingWasHeldOut) {
 
   Calibration silent = ranked();
   for (auto& [name, row] : silent.discharge) row.figures.clear();
-  c.material = read(with_calibration(pine_text(), calibration_toml(silent, {})));
+  c.material = read_material_text(with_calibration(pine_text(), calibration_toml(silent, {})));
   const std::vector<std::string> johanson{"hopper.discharge=johanson"};
   EXPECT_DOUBLE_EQ(std::get<double>(rate_of(design_check(c)).value),
                    std::get<double>(rate_of(design_check(c, ModelChoices::parse(johanson))).value));

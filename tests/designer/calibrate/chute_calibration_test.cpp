@@ -25,7 +25,7 @@ namespace {
 
 using testing::pine_text;
 
-Material read(const std::string& text) { return testing::read_material_text(text); }
+using testing::read_material_text;
 
 // Pouliquen's h_stop, theta1 the pine's 27 deg unless given.
 double h_stop(double theta2, double length, double angle, double theta1 = 27 * kDegree) {
@@ -33,10 +33,10 @@ double h_stop(double theta2, double length, double angle, double theta1 = 27 * k
   return length * (std::tan(theta2) - std::tan(angle)) / (std::tan(angle) - t1);
 }
 
-std::vector<StopObservation> made_by(double theta2, double length,
-                                     const std::vector<double>& fitted,
-                                     const std::vector<double>& held_out,
-                                     double theta1 = 27 * kDegree) {
+std::vector<StopObservation> deposits_made_by(double theta2, double length,
+                                              const std::vector<double>& fitted,
+                                              const std::vector<double>& held_out,
+                                              double theta1 = 27 * kDegree) {
   std::vector<StopObservation> out;
   for (double deg : fitted)
     out.push_back({deg * kDegree, h_stop(theta2, length, deg * kDegree, theta1), 1e-3, false});
@@ -45,7 +45,7 @@ std::vector<StopObservation> made_by(double theta2, double length,
   return out;
 }
 
-ChuteCalibration example(double theta2, double length) {
+ChuteCalibration chute_example(double theta2, double length) {
   ChuteCalibration c;
   c.against = "dem";
   c.rung = "L3 DEM, the seed's law in periodic stopping layers (h_stop bisected to one sphere)";
@@ -64,8 +64,8 @@ ChuteCalibration example(double theta2, double length) {
 // deg: the fit returns all three from the pine's published 27 deg, 40 deg and 10 mm, with a
 // spare point for standard errors, and meets the held-out 35 deg.
 TEST(StopLawFit, RecoversTheLawThatMadeItsData) {
-  const auto obs = made_by(45 * kDegree, 25e-3, {29.5, 31, 33, 37}, {35}, 25 * kDegree);
-  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  const auto obs = deposits_made_by(45 * kDegree, 25e-3, {29.5, 31, 33, 37}, {35}, 25 * kDegree);
+  const StopLawFit f = fit_stop_law(obs, read_material_text(pine_text()));
   ASSERT_TRUE(f.failure.empty()) << f.failure;
   EXPECT_TRUE(f.theta1_fitted);
   EXPECT_DOUBLE_EQ(in_degrees(f.theta1_before), 27.0);
@@ -82,8 +82,8 @@ TEST(StopLawFit, RecoversTheLawThatMadeItsData) {
 
 // Three inclinations determine theta1 too, exactly: no spare point, so no standard error.
 TEST(StopLawFit, ThreeInclinationsFitTheta1Exactly) {
-  const auto obs = made_by(44 * kDegree, 20e-3, {33, 37, 42}, {39.5}, 29 * kDegree);
-  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  const auto obs = deposits_made_by(44 * kDegree, 20e-3, {33, 37, 42}, {39.5}, 29 * kDegree);
+  const StopLawFit f = fit_stop_law(obs, read_material_text(pine_text()));
   ASSERT_TRUE(f.failure.empty()) << f.failure;
   EXPECT_TRUE(f.theta1_fitted);
   EXPECT_NEAR(in_degrees(f.theta1_after), 29.0, 1e-3);
@@ -96,8 +96,8 @@ TEST(StopLawFit, ThreeInclinationsFitTheta1Exactly) {
 // Two inclinations determine theta2 and L exactly with theta1 held at the material's (the
 // inversion of reduced_models.md 3.5): no spare point, so no standard error.
 TEST(StopLawFit, TwoInclinationsInvertTheLawExactly) {
-  const auto obs = made_by(42 * kDegree, 15e-3, {29.5, 37}, {});
-  const StopLawFit f = fit_stop_law(obs, read(pine_text()));
+  const auto obs = deposits_made_by(42 * kDegree, 15e-3, {29.5, 37}, {});
+  const StopLawFit f = fit_stop_law(obs, read_material_text(pine_text()));
   ASSERT_TRUE(f.failure.empty()) << f.failure;
   EXPECT_FALSE(f.theta1_fitted);
   EXPECT_DOUBLE_EQ(in_degrees(f.theta1_after), 27.0);
@@ -112,7 +112,7 @@ TEST(StopLawFit, TwoInclinationsInvertTheLawExactly) {
 // 37 deg), one thinning too slowly for any theta2 below 89 deg, and one below theta1: each is
 // refused with its reason and the law kept as published.
 TEST(StopLawFit, DepositsNoPouliquenLawHoldsAreRefused) {
-  const Material pine = read(pine_text());
+  const Material pine = read_material_text(pine_text());
   const StopLawFit rising = fit_stop_law(
       {{29.5 * kDegree, 63e-3, 5e-3, false}, {37 * kDegree, 74e-3, 5e-3, false}}, pine);
   EXPECT_NE(rising.failure.find("do not thin"), std::string::npos) << rising.failure;
@@ -140,30 +140,30 @@ TEST(ChuteCalibrationToml, RoundTripsBesideTheDrumsCalibration) {
   const std::string with_drum =
       with_calibration(pine_text(), drum_calibration_toml(drum, {}), CalibrationPart::drum);
   const std::vector<ChutePointRecord> points = {{29.5 * kDegree, 48e-3, 4e-3, false, "DEM"}};
-  const std::string both =
-      with_calibration(with_drum, chute_calibration_toml(example(43.5 * kDegree, 0.0125), points),
-                       CalibrationPart::chute);
+  const std::string both = with_calibration(
+      with_drum, chute_calibration_toml(chute_example(43.5 * kDegree, 0.0125), points),
+      CalibrationPart::chute);
   EXPECT_NE(both.find("theta2 = \"43.5 deg\""), std::string::npos) << both;
   EXPECT_NE(both.find("stop_length = \"12.5 mm\""), std::string::npos) << both;
-  const Material m = read(both);
+  const Material m = read_material_text(both);
   ASSERT_TRUE(m.calibration && m.calibration->chute && m.calibration->drum);
   EXPECT_NEAR(m.calibration->chute->law.coefficients.at("theta2"), 43.5 * kDegree, 1e-15);
   EXPECT_NEAR(m.calibration->chute->law.coefficients.at("stop_length"), 0.0125, 1e-15);
   EXPECT_NEAR(m.calibration->chute->highest_angle, 37 * kDegree, 1e-15);
   EXPECT_EQ(m.calibration->chute->points, 1u);
   EXPECT_DOUBLE_EQ(m.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
-  const Material again = read(with_calibration(
-      both, chute_calibration_toml(example(41 * kDegree, 0.02), {}), CalibrationPart::chute));
+  const Material again = read_material_text(with_calibration(
+      both, chute_calibration_toml(chute_example(41 * kDegree, 0.02), {}), CalibrationPart::chute));
   EXPECT_NEAR(again.calibration->chute->law.coefficients.at("theta2"), 41 * kDegree, 1e-15);
   EXPECT_EQ(again.calibration->chute->points, 0u);
   EXPECT_DOUBLE_EQ(again.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
   EXPECT_EQ(again.calibration->chute->law.coefficients.count("theta1"), 0u);  // held
   // A fitted theta1 is written in degrees, read back, and the chute check uses it.
-  ChuteCalibration fitted = example(41 * kDegree, 0.02);
+  ChuteCalibration fitted = chute_example(41 * kDegree, 0.02);
   fitted.law.coefficients["theta1"] = 25 * kDegree;
   const std::string text = chute_calibration_toml(fitted, {});
   EXPECT_NE(text.find("theta1 = \"25 deg\""), std::string::npos) << text;
-  const Material third = read(with_calibration(both, text, CalibrationPart::chute));
+  const Material third = read_material_text(with_calibration(both, text, CalibrationPart::chute));
   EXPECT_NEAR(third.calibration->chute->law.coefficients.at("theta1"), 25 * kDegree, 1e-15);
   EXPECT_NEAR(chute_material(third).surface_flow->theta1, 25 * kDegree, 1e-15);
   EXPECT_NEAR(third.surface_flow->theta1, 27 * kDegree, 1e-15);  // the material's kept
@@ -174,14 +174,14 @@ TEST(ChuteCalibrationToml, RoundTripsBesideTheDrumsCalibration) {
 TEST(ChuteCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
   const auto key_of = [](const std::string& table) {
     try {
-      const Material m = read(pine_text() + "\n" + table);
+      const Material m = read_material_text(pine_text() + "\n" + table);
       (void)chute_material(m);
     } catch (const InputError& e) {
       return e.key();
     }
     return std::string("accepted");
   };
-  const std::string good = chute_calibration_toml(example(43.5 * kDegree, 0.0125), {});
+  const std::string good = chute_calibration_toml(chute_example(43.5 * kDegree, 0.0125), {});
   const auto replaced = [&](const std::string& from, const std::string& to) {
     std::string s = good;
     s.replace(s.find(from), from.size(), to);
@@ -209,11 +209,11 @@ TEST(ChuteCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
 // a chute at 40 deg, beyond the calibrated 29.5-37 deg, says it is extrapolated.
 TEST(ChuteCalibration, DesignUsesTheCalibrationAndSaysSo) {
   Case c = load_case("cases/inclined_plane_29_5.toml");
-  c.material = read(pine_text());
+  c.material = read_material_text(pine_text());
   const DesignRecord before = design_check(c);
-  c.material =
-      read(with_calibration(pine_text(), chute_calibration_toml(example(45 * kDegree, 0.025), {}),
-                            CalibrationPart::chute));
+  c.material = read_material_text(
+      with_calibration(pine_text(), chute_calibration_toml(chute_example(45 * kDegree, 0.025), {}),
+                       CalibrationPart::chute));
   const DesignRecord after = design_check(c);
   const Estimate& h0 = *find_estimate(before.results, "stopping_thickness");
   const Estimate& h1 = *find_estimate(after.results, "stopping_thickness");

@@ -25,7 +25,7 @@ namespace {
 
 using testing::pine_text;
 
-Material read(const std::string& text) { return testing::read_material_text(text); }
+using testing::read_material_text;
 
 Drum seed_drum(double rpm) {
   Drum d = std::get<Drum>(load_case("cases/rotating_drum_20rpm.toml").equipment);
@@ -36,7 +36,7 @@ Drum seed_drum(double rpm) {
 // Angles the layer gives with (c_delta, shift) and no end walls, as a slice's references.
 std::vector<DrumObservation> made_by(double fraction, double shift, const std::vector<double>& rpms,
                                      const std::vector<double>& held_out) {
-  Material m = read(pine_text());
+  Material m = read_material_text(pine_text());
   m.drum_flow->end_wall_friction = 0.0;
   m.calibration.emplace().drum.emplace().layer.coefficients = {{"layer_fraction", fraction},
                                                                {"friction_shift", shift}};
@@ -50,7 +50,7 @@ std::vector<DrumObservation> made_by(double fraction, double shift, const std::v
   return out;
 }
 
-DrumCalibration example(double fraction, double shift) {
+DrumCalibration drum_example(double fraction, double shift) {
   DrumCalibration c;
   c.against = "cel";
   c.rung = "L2 CEL-FEM, cells 20, 10 and 5 mm";
@@ -72,7 +72,7 @@ const std::vector<DrumPointRecord> kDrumPoints = {
 // published 0.2 and 0 deg are its start), and the held-out speed is met to the fit's precision.
 TEST(DrumLayerFit, RecoversTheCoefficientsThatMadeItsData) {
   const auto obs = made_by(0.3, 6 * kDegree, {5, 10, 20, 30}, {25});
-  const DrumLayerFit f = fit_drum_layer(obs, read(pine_text()), false);
+  const DrumLayerFit f = fit_drum_layer(obs, read_material_text(pine_text()), false);
   ASSERT_TRUE(f.failure.empty()) << f.failure;
   EXPECT_NEAR(f.layer_fraction_after, 0.3, 1e-4);
   EXPECT_NEAR(in_degrees(f.shift_after), 6.0, 1e-3);
@@ -87,7 +87,7 @@ TEST(DrumLayerFit, RecoversTheCoefficientsThatMadeItsData) {
 // fitted (the held figure says so).
 TEST(DrumLayerFit, HoldsALayerFractionOutsideItsRange) {
   const auto obs = made_by(0.02, 0.0, {5, 10, 20, 30}, {});
-  const DrumLayerFit f = fit_drum_layer(obs, read(pine_text()), false);
+  const DrumLayerFit f = fit_drum_layer(obs, read_material_text(pine_text()), false);
   ASSERT_TRUE(f.failure.empty()) << f.failure;
   EXPECT_DOUBLE_EQ(f.layer_fraction_after, 0.2);
   EXPECT_NE(f.held.find("c_delta held at 0.2"), std::string::npos) << f.held;
@@ -110,10 +110,10 @@ TEST(DrumCalibrationToml, RoundTripsBesideTheHoppersCalibration) {
   const std::string with_hopper =
       with_calibration(pine_text(), calibration_toml(hopper, {}), CalibrationPart::hopper);
   const std::string both = with_calibration(
-      with_hopper, drum_calibration_toml(example(0.31, 4.5 * kDegree), kDrumPoints),
+      with_hopper, drum_calibration_toml(drum_example(0.31, 4.5 * kDegree), kDrumPoints),
       CalibrationPart::drum);
   EXPECT_NE(both.find("friction_shift = \"4.5 deg\""), std::string::npos) << both;
-  const Material m = read(both);
+  const Material m = read_material_text(both);
   ASSERT_TRUE(m.calibration && m.calibration->drum);
   EXPECT_DOUBLE_EQ(m.calibration->drum->layer.coefficients.at("layer_fraction"), 0.31);
   EXPECT_NEAR(m.calibration->drum->layer.coefficients.at("friction_shift"), 4.5 * kDegree, 1e-15);
@@ -123,18 +123,18 @@ TEST(DrumCalibrationToml, RoundTripsBesideTheHoppersCalibration) {
   EXPECT_DOUBLE_EQ(m.calibration->discharge.at("johanson").coefficients.at("factor"), 1.83);
 
   const std::string again = with_calibration(
-      both, drum_calibration_toml(example(0.25, -2 * kDegree), {}), CalibrationPart::drum);
-  const Material m2 = read(again);
+      both, drum_calibration_toml(drum_example(0.25, -2 * kDegree), {}), CalibrationPart::drum);
+  const Material m2 = read_material_text(again);
   EXPECT_DOUBLE_EQ(m2.calibration->drum->layer.coefficients.at("layer_fraction"), 0.25);
   EXPECT_EQ(m2.calibration->drum->points, 0u);
   EXPECT_DOUBLE_EQ(m2.calibration->discharge.at("johanson").coefficients.at("factor"), 1.83);
   // A hopper calibration written afterwards keeps the drum's part.
-  const Material m3 =
-      read(with_calibration(again, calibration_toml(hopper, {}), CalibrationPart::hopper));
+  const Material m3 = read_material_text(
+      with_calibration(again, calibration_toml(hopper, {}), CalibrationPart::hopper));
   EXPECT_DOUBLE_EQ(m3.calibration->drum->layer.coefficients.at("layer_fraction"), 0.25);
   // A drum calibration alone reads without the hopper's provenance.
-  const Material alone = read(with_calibration(
-      pine_text(), drum_calibration_toml(example(0.3, 0.0), {}), CalibrationPart::drum));
+  const Material alone = read_material_text(with_calibration(
+      pine_text(), drum_calibration_toml(drum_example(0.3, 0.0), {}), CalibrationPart::drum));
   EXPECT_TRUE(alone.calibration->discharge.empty());
   EXPECT_DOUBLE_EQ(alone.calibration->drum->layer.coefficients.at("layer_fraction"), 0.3);
 }
@@ -144,13 +144,13 @@ TEST(DrumCalibrationToml, RoundTripsBesideTheHoppersCalibration) {
 TEST(DrumCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
   const auto key_of = [](const std::string& table) {
     try {
-      read(pine_text() + "\n" + table);
+      read_material_text(pine_text() + "\n" + table);
     } catch (const InputError& e) {
       return e.key();
     }
     return std::string("accepted");
   };
-  const std::string good = drum_calibration_toml(example(0.31, 4.5 * kDegree), {});
+  const std::string good = drum_calibration_toml(drum_example(0.31, 4.5 * kDegree), {});
   const auto replaced = [&](const std::string& from, const std::string& to) {
     std::string s = good;
     s.replace(s.find(from), from.size(), to);
@@ -172,10 +172,11 @@ TEST(DrumCalibrationToml, BrokenCoefficientsAreRefusedNamingTheKey) {
 // name the calibration, and the band is widened by its largest error (5 %).
 TEST(DrumCalibration, DesignUsesTheCalibrationAndSaysSo) {
   Case c = load_case("cases/rotating_drum_20rpm.toml");
-  c.material = read(pine_text());
+  c.material = read_material_text(pine_text());
   const DesignRecord before = design_check(c);
-  c.material = read(with_calibration(
-      pine_text(), drum_calibration_toml(example(0.31, 4.5 * kDegree), {}), CalibrationPart::drum));
+  c.material = read_material_text(
+      with_calibration(pine_text(), drum_calibration_toml(drum_example(0.31, 4.5 * kDegree), {}),
+                       CalibrationPart::drum));
   const DesignRecord after = design_check(c);
   const Estimate& a0 = *find_estimate(before.results, "dynamic_angle_of_repose");
   const Estimate& a1 = *find_estimate(after.results, "dynamic_angle_of_repose");

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-std::string refusal(const std::string& text) {
+std::string axis_refusal(const std::string& text) {
   try {
     parse_sweep_axis(text);
   } catch (const InputError& e) {
@@ -73,23 +73,32 @@ TEST(SweepAxis, ListsOfNumbersAndWords) {
 
 // Each fault is refused with what was expected.
 TEST(SweepAxis, MalformedRangesAreRefused) {
-  EXPECT_NE(refusal("hopper.semi_angle=15..40/5").find("give the range a unit"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=10,20,30").find("give the range a unit"), std::string::npos);
-  EXPECT_NE(refusal("hopper.outlet_width=1..2deg:3").find("is a length; \"deg\" measures angle"),
+  EXPECT_NE(axis_refusal("hopper.semi_angle=15..40/5").find("give the range a unit"),
             std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angel=15..40deg/5deg").find("unknown key"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=40..15deg/5deg").find("empty"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=15..40deg/0deg").find("positive"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=15..40deg:1").find("from 2 to 100 000"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=15..40deg").find("a step or a count"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle=15..40deg/1e-9deg").find("more than 100 000"),
+  EXPECT_NE(axis_refusal("hopper.semi_angle=10,20,30").find("give the range a unit"),
             std::string::npos);
-  EXPECT_NE(refusal("hopper.outlet_width=0..1mm:3log").find("positive start"), std::string::npos);
-  EXPECT_NE(refusal("hopper.outlet_width=wide,narrow").find("takes numbers"), std::string::npos);
-  EXPECT_NE(refusal("hopper.shape=1,2").find("takes words"), std::string::npos);
-  EXPECT_NE(refusal("hopper.semi_angle").find("KEY=RANGE"), std::string::npos);
-  EXPECT_NE(refusal("hopper.fill_height=0.2,,0.5 m").find("empty item"), std::string::npos);
-  EXPECT_NE(refusal("hopper.fill_height=1..2 parsecs:3").find("is not a unit"), std::string::npos);
+  EXPECT_NE(
+      axis_refusal("hopper.outlet_width=1..2deg:3").find("is a length; \"deg\" measures angle"),
+      std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angel=15..40deg/5deg").find("unknown key"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle=40..15deg/5deg").find("empty"), std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle=15..40deg/0deg").find("positive"), std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle=15..40deg:1").find("from 2 to 100 000"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle=15..40deg").find("a step or a count"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle=15..40deg/1e-9deg").find("more than 100 000"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.outlet_width=0..1mm:3log").find("positive start"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.outlet_width=wide,narrow").find("takes numbers"),
+            std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.shape=1,2").find("takes words"), std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.semi_angle").find("KEY=RANGE"), std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.fill_height=0.2,,0.5 m").find("empty item"), std::string::npos);
+  EXPECT_NE(axis_refusal("hopper.fill_height=1..2 parsecs:3").find("is not a unit"),
+            std::string::npos);
 }
 
 }  // namespace

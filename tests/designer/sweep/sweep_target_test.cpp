@@ -16,7 +16,7 @@ Estimates results() {
   return r;
 }
 
-std::string refusal(const std::string& text, bool check = false) {
+std::string target_refusal(const std::string& text, bool check = false) {
   try {
     SweepTarget t = parse_sweep_target(text);
     if (check) check_sweep_target(t, results());
@@ -56,15 +56,17 @@ TEST(SweepTarget, NumbersAreConvertedIntoTheResultsUnit) {
 
 // Faults name --target and say what was expected.
 TEST(SweepTarget, BadTargetsAreRefused) {
-  EXPECT_NE(refusal("passes").find("expected pass"), std::string::npos);
-  EXPECT_NE(refusal("mass_flow_rate!=5kg/s").find("compared with >="), std::string::npos);
-  EXPECT_NE(refusal("flow_pattern>=mass").find("compared with = or !="), std::string::npos);
-  EXPECT_NE(refusal("mass_flowrate>=5kg/s", true).find("did you mean \"mass_flow_rate\""),
+  EXPECT_NE(target_refusal("passes").find("expected pass"), std::string::npos);
+  EXPECT_NE(target_refusal("mass_flow_rate!=5kg/s").find("compared with >="), std::string::npos);
+  EXPECT_NE(target_refusal("flow_pattern>=mass").find("compared with = or !="), std::string::npos);
+  EXPECT_NE(target_refusal("mass_flowrate>=5kg/s", true).find("did you mean \"mass_flow_rate\""),
             std::string::npos);
-  EXPECT_NE(refusal("mass_flow_rate>=5", true).find("give the value a unit"), std::string::npos);
-  EXPECT_NE(refusal("mass_flow_rate>=5mm", true).find("measures length"), std::string::npos);
-  EXPECT_NE(refusal("flow_pattern>=5", true).find("is a word"), std::string::npos);
-  EXPECT_NE(refusal("critical_outlet_width=mass", true).find("is a number"), std::string::npos);
+  EXPECT_NE(target_refusal("mass_flow_rate>=5", true).find("give the value a unit"),
+            std::string::npos);
+  EXPECT_NE(target_refusal("mass_flow_rate>=5mm", true).find("measures length"), std::string::npos);
+  EXPECT_NE(target_refusal("flow_pattern>=5", true).find("is a word"), std::string::npos);
+  EXPECT_NE(target_refusal("critical_outlet_width=mass", true).find("is a number"),
+            std::string::npos);
 }
 
 }  // namespace

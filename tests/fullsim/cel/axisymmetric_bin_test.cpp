@@ -14,11 +14,11 @@
 namespace feedflow::cel {
 namespace {
 
-constexpr double kRadius = 0.1, kHeight = 0.6, kDensity = 290.0, kVoidRatio = 0.7102;
+constexpr double kBinRadius = 0.1, kHeight = 0.6, kDensity = 290.0, kVoidRatio = 0.7102;
 const double kWallFriction = std::tan(20.0 * M_PI / 180.0);
 
-// Pine (seed Table 1) filled to kHeight in a bin of half width / radius kRadius whose wall
-// (Coulomb, 20 deg) stands at x = r0 + kRadius, with a free-slip face at x = r0 (the axis when
+// Pine (seed Table 1) filled to kHeight in a bin of half width / radius kBinRadius whose wall
+// (Coulomb, 20 deg) stands at x = r0 + kBinRadius, with a free-slip face at x = r0 (the axis when
 // axisymmetric at r0 = 0, the centre plane of the slice), settled under ramped gravity.
 struct SettledBin {
   HypoplasticModel model = make_hypoplastic_model(loblolly_pine_table1());
@@ -26,12 +26,15 @@ struct SettledBin {
   double r0;
   SettledBin(GridSymmetry symmetry, double h, double inner = 0.0)
       : solver(grid(symmetry, h, inner), model, options(h, inner)), r0(inner) {
-    solver.add_material({{inner, 0.0}, {inner + kRadius, kHeight}, kDensity, kVoidRatio,
+    solver.add_material({{inner, 0.0},
+                         {inner + kBinRadius, kHeight},
+                         kDensity,
+                         kVoidRatio,
                          -10.0 * Eigen::Matrix3d::Identity()});
     while (solver.time() < 1.0) solver.step();
   }
   static CelGrid grid(GridSymmetry symmetry, double h, double inner) {
-    const int nx = static_cast<int>(std::lround(kRadius / h)) + 1;
+    const int nx = static_cast<int>(std::lround(kBinRadius / h)) + 1;
     const int ny = static_cast<int>(std::lround(kHeight / h)) + 2;
     return symmetry == GridSymmetry::axisymmetric ? make_axisymmetric_grid(nx, ny, h, {inner, 0.0})
                                                   : make_plane_strain_grid(nx, ny, h, {inner, 0.0});
@@ -43,7 +46,7 @@ struct SettledBin {
     o.gravity_ramp_time = 0.3;
     o.settling_damping = 100.0;  // dynamic relaxation, as settled_column_test
     RigidWall wall;  // travelled upward: the material on its left (x < r0 + R)
-    const double x = inner + kRadius + 1e-9 * h;
+    const double x = inner + kBinRadius + 1e-9 * h;
     wall.points = {{x, -1.0}, {x, kHeight + 1.0}};
     wall.friction = kWallFriction;
     o.rigid_walls.push_back(wall);
@@ -70,7 +73,9 @@ struct SettledBin {
   }
   // The settled surface: the material volume over the section's (per unit depth) [m].
   double surface_height() const {
-    const double section = solver.grid().axisymmetric() ? 0.5 * ((r0 + kRadius) * (r0 + kRadius) - r0 * r0) : kRadius;
+    const double section = solver.grid().axisymmetric()
+                               ? 0.5 * ((r0 + kBinRadius) * (r0 + kBinRadius) - r0 * r0)
+                               : kBinRadius;
     return material_volume() / section;
   }
   // The settled bulk density: mass over material volume [kg/m^3].
@@ -86,9 +91,10 @@ double janssen_error(const SettledBin& b) {
   const std::size_t mid = g.cell(g.nx / 2, g.ny / 2);
   const Eigen::Matrix3d& t = b.solver.cells().stress[mid];
   const double k0 = at_rest_stress_ratio(b.model, mean_pressure(t), b.solver.cells().void_ratio[mid]);
-  const JanssenBin janssen{g.axisymmetric() ? kRadius / 2 : kRadius, b.bulk_density(), k0, kWallFriction};
+  const JanssenBin janssen{g.axisymmetric() ? kBinRadius / 2 : kBinRadius, b.bulk_density(), k0,
+                           kWallFriction};
   double worst = 0.0;
-  for (int j = 0; b.depth_of_row(j) > 0.5 * kRadius; ++j)
+  for (int j = 0; b.depth_of_row(j) > 0.5 * kBinRadius; ++j)
     worst = std::max(worst, std::abs(b.mean_vertical_stress(j) / janssen_stress(janssen, b.depth_of_row(j)).vertical - 1.0));
   std::printf("%s, h = %.0f mm: K0 %.3f, bulk density %.1f kg/m^3, bottom sigma_v %.1f Pa, worst "
               "deviation from Janssen %.2f %%\n", symmetry_name(g.symmetry), 1e3 * g.cell_size, k0,

@@ -21,12 +21,13 @@
 
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/column_collapse_scene.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-const SceneMaterial kPine{290.0, 0.7102};
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::kPine;
+using testing::pine;
 
 // Lube et al.: 1.2 a below, 1.9 a^(2/3) above; the two meet at a = 3.97, take the smaller.
 double published_runout(double a) { return std::min(1.2 * a, 1.9 * std::pow(a, 2.0 / 3.0)); }
@@ -99,7 +100,7 @@ TEST(CelColumnCollapse, SmallColumnsComeToRestAndSpreadWithAspectRatio) {
 // Larger columns (L0 = 0.1 m, 5 mm cells; a = 0.5 ... 4), first order (0) and second order +
 // PLIC (1): the runout at rest against the published scaling within a factor 2 (the stated
 // tolerance; a failure says the law is too strong or too weak, see the header).
-class CelColumnCollapseLong : public testing::TestWithParam<int> {};
+class CelColumnCollapseLong : public ::testing::TestWithParam<int> {};
 
 TEST_P(CelColumnCollapseLong, LONG_RunoutAgainstPublishedScaling) {
   RemapOptions remap;
@@ -116,7 +117,7 @@ TEST_P(CelColumnCollapseLong, LONG_RunoutAgainstPublishedScaling) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Remaps, CelColumnCollapseLong, testing::Values(0, 1));
+INSTANTIATE_TEST_SUITE_P(Remaps, CelColumnCollapseLong, ::testing::Values(0, 1));
 
 }  // namespace
 }  // namespace feedflow::cel

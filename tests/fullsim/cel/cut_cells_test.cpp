@@ -15,7 +15,7 @@
 namespace feedflow::cel {
 namespace {
 
-constexpr double kCell = 0.01;
+constexpr double kCutCell = 0.01;
 
 double open_volume(const CelGrid& g, const CutCellGeometry& geo) {
   double v = 0.0;
@@ -27,7 +27,7 @@ double open_volume(const CelGrid& g, const CutCellGeometry& geo) {
 // cells wholly on one side are 1 or 0, and every cut cell is closed by its open faces and the
 // wall: a uniform flow along the wall carries no net volume into any cell (plane strain).
 TEST(CelCutCells, StraightWallGivesExactAreaAndNoNetFluxAlongIt) {
-  const CelGrid g = make_plane_strain_grid(20, 20, kCell);  // 0.2 m square
+  const CelGrid g = make_plane_strain_grid(20, 20, kCutCell);  // 0.2 m square
   const double a = 20.0 * std::numbers::pi / 180.0;
   // Material above the line y = 0.03 + x tan a (travelling to the right keeps it on the left).
   RigidWall w;
@@ -41,16 +41,16 @@ TEST(CelCutCells, StraightWallGivesExactAreaAndNoNetFluxAlongIt) {
   const Eigen::Vector2d along(std::cos(a), std::sin(a));
   for (std::size_t c = 0; c < g.cell_count(); ++c) {
     const double dc = distance_to_walls(walls, g.cell_centre(c));
-    if (dc > 0.71 * kCell) {
+    if (dc > 0.71 * kCutCell) {
       EXPECT_EQ(geo.open[c], 1.0);
     }
-    if (dc < -0.71 * kCell) {
+    if (dc < -0.71 * kCutCell) {
       EXPECT_EQ(geo.open[c], 0.0);
     }
     if (geo.open[c] > 0.0 && geo.open[c] < 1.0) ++cut;
     const int i = g.cell_i(c), j = g.cell_j(c);
-    const double net = kCell * (along.x() * (geo.aperture(0, i + 1, j) - geo.aperture(0, i, j)) +
-                                along.y() * (geo.aperture(1, j + 1, i) - geo.aperture(1, j, i)));
+    const double net = kCutCell * (along.x() * (geo.aperture(0, i + 1, j) - geo.aperture(0, i, j)) +
+                                   along.y() * (geo.aperture(1, j + 1, i) - geo.aperture(1, j, i)));
     EXPECT_NEAR(net, 0.0, 1e-15) << "cell " << i << ", " << j;
   }
   EXPECT_GE(cut, 20);  // the wall crosses at least one cell per column
@@ -60,7 +60,7 @@ TEST(CelCutCells, StraightWallGivesExactAreaAndNoNetFluxAlongIt) {
 // frustum's int r dA, exact for a straight wall however the cells cut it; refining the sampling
 // changes nothing.
 TEST(CelCutCells, ConeWallGivesTheFrustumVolumePerRadian) {
-  const double h = kCell, r0 = 0.03, a = 30.0 * std::numbers::pi / 180.0, z1 = 0.2;
+  const double h = kCutCell, r0 = 0.03, a = 30.0 * std::numbers::pi / 180.0, z1 = 0.2;
   const CelGrid g = make_axisymmetric_grid(20, 20, h);  // r, z in 0-0.2 m
   RigidWall w;  // material inside: r < r0 + z tan a (travelling upwards keeps it on the left)
   w.points = {{r0, 0.0}, {r0 + z1 * std::tan(a), z1}};
@@ -99,7 +99,7 @@ TEST(CelCutCells, AWallAlongAGridLineClosesTheFaceOnItAndTheCellsBeyond) {
 // A wedge's kink (vertical bin wall over a 30 deg wall): the piecewise-linear sampling errs only
 // in the kink's cell, by less than a sub-square, and the open fractions stay within [0, 1].
 TEST(CelCutCells, KinkedWallConvergesUnderSubdivision) {
-  const CelGrid g = make_plane_strain_grid(10, 10, kCell);  // 0.1 m square
+  const CelGrid g = make_plane_strain_grid(10, 10, kCutCell);  // 0.1 m square
   const double t = std::tan(30.0 * std::numbers::pi / 180.0);
   // Up the hopper wall from (0.0555 - 0.0555 t, 0) to the kink at (0.0555, 0.0555), then up the
   // bin wall x = 0.0555: material on the left of travel, x < the wall.
@@ -113,7 +113,7 @@ TEST(CelCutCells, KinkedWallConvergesUnderSubdivision) {
     return std::abs(open_volume(g, cut_cell_geometry(g, walls, s)) - exact);
   };
   // Only the kink's cell errs, by part of one sub-square's area (measured: 0.08-0.14 of it).
-  for (int s : {1, 2, 4, 8, 16}) EXPECT_LT(error(s), 0.2 * (kCell / s) * (kCell / s)) << s;
+  for (int s : {1, 2, 4, 8, 16}) EXPECT_LT(error(s), 0.2 * (kCutCell / s) * (kCutCell / s)) << s;
   EXPECT_LT(error(16), 0.01 * error(1));
   for (double f : cut_cell_geometry(g, walls, 8).open) {
     EXPECT_GE(f, 0.0);
@@ -125,7 +125,7 @@ TEST(CelCutCells, KinkedWallConvergesUnderSubdivision) {
 // material, away from the box faces (which carry no flux here), after one remap of a granular
 // bed filling the region above a 20 deg wall and moving along it at 0.5 m/s.
 double worst_fill_after_flow_along_wall(WallCells wall_cells) {
-  const CelGrid g = make_plane_strain_grid(20, 20, kCell);
+  const CelGrid g = make_plane_strain_grid(20, 20, kCutCell);
   const double a = 20.0 * std::numbers::pi / 180.0;
   RigidWall w;
   w.points = {{0.0, 0.03}, {0.2, 0.03 + 0.2 * std::tan(a)}};

@@ -11,12 +11,13 @@
 #include "fullsim/cel/scene_measurements.hpp"
 #include "models/units/angle.hpp"
 #include "tests/fullsim/cel/ledger_rate.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-const SceneMaterial kPine{290.0, 0.7102};
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::kPine;
+using testing::pine;
 
 // cases/pilot_hopper.toml: 30 deg, 0.6 m bin, 0.68 m fill above the apex, 8.5 deg wall.
 double pilot_hopper_final_rate(double outlet, double cell) {

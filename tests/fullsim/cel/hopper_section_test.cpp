@@ -12,14 +12,15 @@
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
 #include "models/units/angle.hpp"
-#include "tests/fullsim/cel/small_hopper.hpp"
 #include "tests/fullsim/cel/ledger_rate.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
+#include "tests/fullsim/cel/small_hopper.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-const SceneMaterial kPine{290.0, 0.7102};
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::kPine;
+using testing::pine;
 
 using testing::small_wedge;  // the small twin of scene_test.cpp
 

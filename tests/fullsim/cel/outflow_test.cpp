@@ -7,11 +7,12 @@
 #include <numbers>
 
 #include "fullsim/cel/cel_solver.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::pine;
 const Eigen::Matrix3d kSeedStress = -10.0 * Eigen::Matrix3d::Identity();
 
 // Largest drop of the cumulative booked mass between two samples (0 if monotone) [kg/m].

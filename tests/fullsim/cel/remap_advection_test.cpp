@@ -183,7 +183,7 @@ TEST(CelRemapAdvection, LinearFieldIsTranslatedExactly) {
 
 // Every remap variant conserves mass, void mass (e M) and the stress integral (T vf V) to
 // round-off in a rotating flow inside a closed box, and keeps 0 <= vf <= 1 without clipping.
-class CelRemapVariants : public testing::TestWithParam<int> {};
+class CelRemapVariants : public ::testing::TestWithParam<int> {};
 
 RemapOptions variant(int k) {
   RemapOptions o = k % 2 == 0 ? first_order() : second_order();
@@ -233,7 +233,7 @@ TEST_P(CelRemapVariants, ConserveContentsInARotatingFlow) {
 }
 
 // Variants 0..5: {first, second} order state x {donor cell, limited, PLIC} material flux.
-INSTANTIATE_TEST_SUITE_P(AllRemaps, CelRemapVariants, testing::Range(0, 6));
+INSTANTIATE_TEST_SUITE_P(AllRemaps, CelRemapVariants, ::testing::Range(0, 6));
 
 }  // namespace
 }  // namespace feedflow::cel

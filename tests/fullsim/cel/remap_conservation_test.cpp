@@ -10,11 +10,12 @@
 #include "fullsim/cel/cel_solver.hpp"
 #include "fullsim/cel/nodal_forces.hpp"
 #include "fullsim/cel/remap_phase.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::pine;
 
 // Mass-weighted variance of the cell centres along an axis [m^2].
 double spread(const CelSolver& s, int axis) {

@@ -11,19 +11,20 @@
 
 #include "fullsim/cel/cel_checkpoint.hpp"
 #include "fullsim/cel/cel_field_snapshots.hpp"
-#include "fullsim/common/hdf5_file.hpp"
 #include "fullsim/cel/cel_scene_run.hpp"
 #include "fullsim/cel/chute_scene.hpp"
 #include "fullsim/cel/hopper_scene.hpp"
 #include "fullsim/cel/scene_measurements.hpp"
+#include "fullsim/common/hdf5_file.hpp"
 #include "models/units/angle.hpp"
 #include "tests/fullsim/cel/ledger_rate.hpp"
+#include "tests/fullsim/cel/pine_scene_material.hpp"
 
 namespace feedflow::cel {
 namespace {
 
-const SceneMaterial kPine{290.0, 0.7102};
-HypoplasticModel pine() { return make_hypoplastic_model(loblolly_pine_table1()); }
+using testing::kPine;
+using testing::pine;
 
 // The pilot hopper's wedge (30 deg, pine on steel 8.5 deg) with a smaller bin (0.3 m wide,
 // filled 0.35 m above the apex), 10 mm cells.

@@ -16,14 +16,14 @@
 namespace feedflow::cel {
 namespace {
 
-constexpr double kWidth = 0.2, kHeight = 0.4, kCell = 0.02, kGravity = 9.81;
+constexpr double kWidth = 0.2, kHeight = 0.4, kColumnCell = 0.02, kColumnGravity = 9.81;
 
 struct SettledColumn {
   HypoplasticModel model = make_hypoplastic_model(loblolly_pine_table1());
   CelSolver solver;
   double peak_kinetic_energy = 0.0;
   double mass0 = 0.0;
-  SettledColumn() : solver(make_plane_strain_grid(10, 30, kCell), model, options()) {
+  SettledColumn() : solver(make_plane_strain_grid(10, 30, kColumnCell), model, options()) {
     solver.add_material({{0.0, 0.0}, {kWidth, kHeight}, 290.0, 0.7102,
                          -10.0 * Eigen::Matrix3d::Identity()});
     mass0 = solver.total_mass();
@@ -67,7 +67,7 @@ TEST(CelSettledColumn, BaseStressCarriesWeight) {
   double above = 0.0;
   for (std::size_t k = 0; k < g.cell_count(); ++k)
     above += (g.cell_j(k) == 0 ? 0.5 : 1.0) * c.solver.cells().mass[k];
-  const double expected = above * kGravity / kWidth;
+  const double expected = above * kColumnGravity / kWidth;
   const double base = -c.solver.cells().stress[c.base_cell()](1, 1);
   std::printf("base sigma_v = %.1f Pa, weight above = %.1f Pa (%.2f %%)\n", base, expected,
               100.0 * (base / expected - 1.0));
@@ -122,14 +122,15 @@ TEST(CelSettledColumn, WaveSpeedBelowTimeStepBound) {
               bound, c.solver.last_dt());
   EXPECT_GT(wave, 0.2 * bound);  // the bound is not vacuous
   EXPECT_LT(wave, bound);
-  EXPECT_LT(c.solver.last_dt(), kCell / (std::sqrt(2.0) * wave));
+  EXPECT_LT(c.solver.last_dt(), kColumnCell / (std::sqrt(2.0) * wave));
 }
 
 // The blow-up guard names the step, time and cell when a node outruns the speed bound.
 TEST(CelSettledColumn, BlowUpGuardThrows) {
   CelOptions o = SettledColumn::options();
   o.max_speed = 1e-4;
-  CelSolver s(make_plane_strain_grid(4, 6, kCell), make_hypoplastic_model(loblolly_pine_table1()), o);
+  CelSolver s(make_plane_strain_grid(4, 6, kColumnCell),
+              make_hypoplastic_model(loblolly_pine_table1()), o);
   s.add_material({{0.0, 0.0}, {0.08, 0.08}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
   try {
     for (int k = 0; k < 1000; ++k) s.step();
@@ -146,8 +147,8 @@ TEST(CelSettledColumn, BlowUpGuardThrows) {
 // guard, naming the cell and a safer step, before the time-step pass would fail on it (it was
 // an internal error: a 5 mm pilot hopper ended so).
 TEST(CelSettledColumn, StateWithoutAWaveSpeedStopsTheRun) {
-  CelSolver s(make_plane_strain_grid(4, 6, kCell), make_hypoplastic_model(loblolly_pine_table1()),
-              SettledColumn::options());
+  CelSolver s(make_plane_strain_grid(4, 6, kColumnCell),
+              make_hypoplastic_model(loblolly_pine_table1()), SettledColumn::options());
   s.add_material({{0.0, 0.0}, {0.08, 0.08}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
   s.step();
   CelSolverState state = s.state();
@@ -168,8 +169,8 @@ TEST(CelSettledColumn, StateWithoutAWaveSpeedStopsTheRun) {
 // the wedge's outlet lip was crushed to before the corner contact (void ratio 0.003, pressure
 // 23 MPa; its step fell 1700-fold).
 TEST(CelSettledColumn, CollapsingStepStopsTheRunAndNamesASafeCourantNumber) {
-  CelSolver s(make_plane_strain_grid(4, 6, kCell), make_hypoplastic_model(loblolly_pine_table1()),
-              SettledColumn::options());
+  CelSolver s(make_plane_strain_grid(4, 6, kColumnCell),
+              make_hypoplastic_model(loblolly_pine_table1()), SettledColumn::options());
   s.add_material({{0.0, 0.0}, {0.08, 0.08}, 290.0, 0.7102, -10.0 * Eigen::Matrix3d::Identity()});
   while (s.time() < 0.2) s.step();
   const double settling_step = s.last_dt();

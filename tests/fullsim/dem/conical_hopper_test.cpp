@@ -14,12 +14,12 @@
 namespace feedflow {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kConeDegree = std::numbers::pi / 180.0;
 
 // A small cone (30 deg, 60 mm outlet, 0.12 m bin, 0.12 m fill above the apex) of 3 mm
 // spheres, as a sector of `sector_deg`.
 ConicalHopper small_cone(double sector_deg) {
-  return ConicalHopper{30.0 * kDeg, 0.06, 0.12, 0.12, sector_deg * kDeg, 3e-3};
+  return ConicalHopper{30.0 * kConeDegree, 0.06, 0.12, 0.12, sector_deg * kConeDegree, 3e-3};
 }
 
 // Every vertex of the cone mesh lies on the cone (radius D/2 + z tan theta) between the outlet
@@ -49,8 +49,8 @@ TEST(ConicalHopper, MeshLiesOnTheConeWithinATwentiethOfARadius) {
 // it; a sector holds a point on its mid-line and refuses one beyond its sides.
 TEST(ConicalHopper, GeometryFillMassAndSector) {
   const ConicalHopper whole = small_cone(360.0), quarter = small_cone(90.0);
-  EXPECT_NEAR(whole.apex_depth(), 0.03 / std::tan(30 * kDeg), 1e-15);
-  EXPECT_NEAR(whole.bin_bottom(), 0.03 / std::tan(30 * kDeg), 1e-15);
+  EXPECT_NEAR(whole.apex_depth(), 0.03 / std::tan(30 * kConeDegree), 1e-15);
+  EXPECT_NEAR(whole.bin_bottom(), 0.03 / std::tan(30 * kConeDegree), 1e-15);
   const double zt = whole.fill_top(), zb = whole.bin_bottom();
   const double frustum = std::numbers::pi / 3.0 * zb * (0.03 * 0.03 + 0.03 * 0.06 + 0.06 * 0.06);
   const double volume = frustum + std::numbers::pi * 0.06 * 0.06 * (zt - zb);
@@ -93,7 +93,8 @@ TEST(ConicalHopper, QuarterFillsInsideAndKeepsItsBooks) {
     // the 3D bed's weight presses the wall contacts to about 0.14 R
     const double from_cone = (h.radius_at(x.z()) - std::hypot(x.x(), x.y())) * std::cos(h.semi_angle);
     EXPECT_GT(from_cone, 0.8 * h.radius) << "particle " << p.id[k];
-    EXPECT_GT(x.x() * std::sin(45 * kDeg) - std::abs(x.y()) * std::cos(45 * kDeg), 0.9 * h.radius);
+    EXPECT_GT(x.x() * std::sin(45 * kConeDegree) - std::abs(x.y()) * std::cos(45 * kConeDegree),
+              0.9 * h.radius);
   }
   e.set_wall_removal_time("gate", e.time());
   e.advance_to(e.time() + 0.25);

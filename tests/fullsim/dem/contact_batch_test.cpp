@@ -13,7 +13,7 @@
 namespace feedflow {
 namespace {
 
-constexpr double kRadius = 1.5e-3;
+constexpr double kPairRadius = 1.5e-3;
 
 // Isolated pairs of pine spheres on a grid of 10 R spacing, each touching with a random
 // overlap up to 0.15 R, random direction, velocities and spins (some spins zero). Between
@@ -28,19 +28,19 @@ struct PairField {
   std::vector<Vec3> start;              // positions as built
   std::vector<Vec3> velocity_at_start;  // velocities as built
 
-  PairField(std::size_t pairs, std::size_t history) : list(0.3 * kRadius, history) {
+  PairField(std::size_t pairs, std::size_t history) : list(0.3 * kPairRadius, history) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (std::size_t k = 0; k < pairs; ++k) {
-      const Vec3 a = 10.0 * kRadius * Vec3(static_cast<double>(k % 5),
-                                           static_cast<double>(k / 5 % 5),
-                                           static_cast<double>(k / 25));
+      const Vec3 a = 10.0 * kPairRadius *
+                     Vec3(static_cast<double>(k % 5), static_cast<double>(k / 5 % 5),
+                          static_cast<double>(k / 25));
       const Vec3 dir = Vec3(u(rng), u(rng), u(rng)).normalized();
-      const double overlap = 0.075 * kRadius * (1.0 + u(rng));
+      const double overlap = 0.075 * kPairRadius * (1.0 + u(rng));
       const Vec3 spin_i = k % 5 == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 30.0);
       const Vec3 spin_j = k % 5 == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(u(rng), u(rng), u(rng)) * 30.0);
-      particles.add(a, kRadius, 390.0, 0.0, Vec3(u(rng), u(rng), u(rng)) * 0.5);
-      particles.add(a + (2.0 * kRadius - overlap) * dir, kRadius, 390.0, 0.0,
+      particles.add(a, kPairRadius, 390.0, 0.0, Vec3(u(rng), u(rng), u(rng)) * 0.5);
+      particles.add(a + (2.0 * kPairRadius - overlap) * dir, kPairRadius, 390.0, 0.0,
                     Vec3(u(rng), u(rng), u(rng)) * 0.5);
       particles.angular_velocity[2 * k] = spin_i;
       particles.angular_velocity[2 * k + 1] = spin_j;
@@ -58,7 +58,7 @@ struct PairField {
     const double phase = 2.0 * std::numbers::pi * s / kPeriod;
     for (std::size_t k = 0; k < particles.size() / 2; ++k) {
       const Vec3 axis = (start[2 * k + 1] - start[2 * k]).normalized();
-      const double overlap = 2.0 * kRadius - (start[2 * k + 1] - start[2 * k]).norm();
+      const double overlap = 2.0 * kPairRadius - (start[2 * k + 1] - start[2 * k]).norm();
       const double shift = overlap * (0.625 * (1.0 - std::cos(phase)) - 0.3);  // -0.3 .. 0.95
       const double speed =
           overlap * 0.625 * std::sin(phase) * (2.0 * std::numbers::pi / kPeriod) / 1e-5;
@@ -103,34 +103,26 @@ ContactInput pair_input(const ParticleStore& p, std::size_t k) {
   const std::size_t i = 2 * k + 1, j = 2 * k;
   const Vec3 d = p.position[i] - p.position[j];
   ContactInput in;
-  in.overlap = 2.0 * kRadius - d.norm();
+  in.overlap = 2.0 * kPairRadius - d.norm();
   in.normal = d.normalized();
-  const double ci = kRadius - 0.5 * in.overlap;
+  const double ci = kPairRadius - 0.5 * in.overlap;
   const Vec3 vr = p.velocity[i] - p.velocity[j];
   in.normal_velocity = vr.dot(in.normal);
   in.tangential_velocity = vr - in.normal_velocity * in.normal +
                            in.normal.cross(ci * (p.angular_velocity[i] + p.angular_velocity[j]));
   in.relative_angular_velocity = p.angular_velocity[i] - p.angular_velocity[j];
-  in.effective_radius = 0.5 * kRadius;
+  in.effective_radius = 0.5 * kPairRadius;
   in.effective_mass = 0.5 * p.mass[i];
   in.effective_inertia = 0.5 * p.inertia[i];
   in.dt = 1e-5;
   return in;
 }
 
-DemParameters pine() {
-  DemParameters dem;
-  dem.particle = {kRadius, 390.0};
-  dem.particle_particle = testing::pine_table2_particle_particle();
-  dem.particle_wall = testing::pine_table2_particle_wall();
-  return dem;
-}
-
 // Each composition's batch gives every pair the force and torques of ContactLaw::evaluate
 // applied to that contact alone, over 40 calls (history growing from sticking into sliding).
 TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
   for (const ContactLawChoice& choice : compositions()) {
-    const DemParameters dem = pine();
+    const DemParameters dem = testing::pine_table2(kPairRadius);
     auto kernel = make_force_kernel(choice, dem);
     PairField field(37, kernel->history_size());  // 37: one full batch of 32 and a part
     const std::vector<Vec3> batched = field.run(*kernel, 512, 40);
@@ -142,7 +134,7 @@ TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
       for (std::size_t k = 0; k < p.size() / 2; ++k) {
         const std::size_t i = 2 * k + 1, j = 2 * k;  // the list keeps a pair under one row
         const ContactInput in = pair_input(p, k);
-        const double ci = kRadius - 0.5 * in.overlap;
+        const double ci = kPairRadius - 0.5 * in.overlap;
         typename Law::History h{};
         ContactOutput out;
         for (int s = 0; s < 40; ++s) out = law.evaluate(in, h);
@@ -152,7 +144,7 @@ TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
         const std::size_t n = p.size();
         EXPECT_LT((batched[i] - f).norm(), 1e-12 * scale) << Law::name() << " pair " << k;
         EXPECT_LT((batched[j] + f).norm(), 1e-12 * scale) << Law::name() << " pair " << k;
-        EXPECT_LT((batched[n + i] - ti).norm(), 1e-12 * (ti.norm() + scale * kRadius))
+        EXPECT_LT((batched[n + i] - ti).norm(), 1e-12 * (ti.norm() + scale * kPairRadius))
             << Law::name() << " pair " << k;
         if constexpr (requires { law.tangential().friction(); }) {
           const double cap = law.tangential().friction() * std::abs(out.normal_force);
@@ -171,7 +163,7 @@ TEST(ContactBatch, GivesEachPairTheForceOfTheComposedLaw) {
 TEST(ContactBatch, WideLanesGiveTheSameBitsAsTheGenericLanes) {
   if (lane_bits_available() < 256) GTEST_SKIP() << "no AVX2 on this processor";
   for (const ContactLawChoice& choice : compositions()) {
-    const DemParameters dem = pine();
+    const DemParameters dem = testing::pine_table2(kPairRadius);
     std::vector<std::vector<Vec3>> runs;
     std::string name;
     for (int bits = 128; bits <= lane_bits_available(); bits *= 2) {
@@ -197,7 +189,7 @@ TEST(ContactBatch, HystereticBranchesGiveTheSameBitsInEveryLaneWidth) {
   for (const ContactLawChoice& choice :
        {choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "none"),
         choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "k_nc")}) {
-    const DemParameters dem = pine();
+    const DemParameters dem = testing::pine_table2(kPairRadius);
     std::vector<std::vector<Vec3>> runs;
     for (int bits = 128; bits <= std::max(128, lane_bits_available()); bits *= 2) {
       auto kernel = make_force_kernel(choice, dem);

@@ -113,7 +113,7 @@ TEST(InclinedPlaneTwin, DepositThickerAt29_5ThanAt37) {
 
 // Deepest overlap between particles (minimum image across the slab) and with the floor, the
 // bin's back wall and the closed gate.
-double deepest_overlap(const InclinedPlaneScene& plane) {
+double deepest_plane_overlap(const InclinedPlaneScene& plane) {
   const ParticleStore& p = plane.engine().particles();
   const SimulationBox& box = plane.engine().box();
   double deepest = 0.0;
@@ -154,10 +154,10 @@ TEST(InclinedPlaneTwin, RainFillReachesTheFillHeightSettledWithoutOverlaps) {
       EXPECT_GT(top[q], H - 2.0 * r) << angle << " deg, quarter " << q;
     }
     std::cerr << angle << " deg: " << p.size() << " particles after the fill, deepest overlap "
-              << deepest_overlap(*plane) / r << " R, tops " << top[0] << ' ' << top[1] << ' ' << top[2]
-              << ' ' << top[3] << " m\n"
+              << deepest_plane_overlap(*plane) / r << " R, tops " << top[0] << ' ' << top[1] << ' '
+              << top[2] << ' ' << top[3] << " m\n"
               << log.str();
-    EXPECT_LT(deepest_overlap(*plane), 0.05 * r) << angle;
+    EXPECT_LT(deepest_plane_overlap(*plane), 0.05 * r) << angle;
   }
 }
 

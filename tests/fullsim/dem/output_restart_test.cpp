@@ -23,7 +23,7 @@ namespace {
 using namespace dem_test;
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
+fs::path output_scratch(const std::string& name) {
   const fs::path d = fs::temp_directory_path() /
                      ("feedflow_demio_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(d);
@@ -65,7 +65,7 @@ std::size_t nonzero_histories(const std::vector<double>& h) {
 // velocity, angular velocity, the contact and wall histories, the walls and the sink; with
 // particle-particle and particle-wall contacts carrying history at the checkpoint.
 TEST(DemOutputRestart, RestartedRunContinuesBitIdentically) {
-  const fs::path dir = scratch("restart");
+  const fs::path dir = output_scratch("restart");
   const DemSettings s = restart_settings();
   const long N = 600;
   std::ostringstream plan;
@@ -119,7 +119,7 @@ TEST(DemOutputRestart, RestartedRunContinuesBitIdentically) {
 // engine still holds, and its particles continue with the straight run's bits (the slab scenes
 // restore into an engine built with their walls and hold).
 TEST(DemOutputRestart, RestoreKeepsThePlaneHold) {
-  const fs::path dir = scratch("hold");
+  const fs::path dir = output_scratch("hold");
   const DemSettings s = restart_settings();
   const long N = 400;
   std::ostringstream plan;
@@ -156,7 +156,7 @@ TEST(DemOutputRestart, RestoreKeepsThePlaneHold) {
 // (a floor re-taken from that bed would be higher), ends with the book of the uninterrupted run,
 // bit for bit, and the same guard line in its plan.
 TEST(DemOutputRestart, RestartKeepsTheGuardsEnergyBook) {
-  const fs::path dir = scratch("guard_book");
+  const fs::path dir = output_scratch("guard_book");
   const DemSettings s = restart_settings();
   auto scene = [&s] {
     ParticleStore p;
@@ -254,7 +254,7 @@ TEST(DemOutputRestart, AnEmptiedRunRestarts) {
 // A damaged checkpoint is refused with the file named: cut to half its size, a future format
 // version, and (at prepare) settings giving another time step than the checkpointed run's.
 TEST(DemOutputRestart, TruncatedWrongVersionOrMismatchedCheckpointIsRefused) {
-  const fs::path dir = scratch("refuse");
+  const fs::path dir = output_scratch("refuse");
   const DemSettings s = restart_settings();
   DemEngine e = make_restart_scene(s);
   std::ostringstream plan;
@@ -306,7 +306,7 @@ TEST(DemOutputRestart, TruncatedWrongVersionOrMismatchedCheckpointIsRefused) {
 // Snapshot read-back: the last snapshot written equals the engine's state bit for bit, the
 // snapshots fall on the chosen interval, and their time and step are stored.
 TEST(DemOutputRestart, SnapshotReadsBackTheStateWritten) {
-  const fs::path dir = scratch("snapshot");
+  const fs::path dir = output_scratch("snapshot");
   DemEngine e = make_restart_scene(restart_settings());
   std::ostringstream plan;
   e.prepare(plan);
@@ -337,7 +337,7 @@ TEST(DemOutputRestart, SnapshotReadsBackTheStateWritten) {
 // with increasing times, and every dataset it names exists in the HDF5 file with the number of
 // points its grid declares (opened with the HDF5 C API).
 TEST(DemOutputRestart, XdmfSidecarNamesExistingDatasets) {
-  const fs::path dir = scratch("xdmf");
+  const fs::path dir = output_scratch("xdmf");
   DemEngine e = make_restart_scene(restart_settings());
   std::ostringstream plan;
   e.prepare(plan);

@@ -87,14 +87,6 @@ struct WallField {
   }
 };
 
-DemParameters pine() {
-  DemParameters dem;
-  dem.particle = {kRadius, 390.0};
-  dem.particle_particle = testing::pine_table2_particle_particle();
-  dem.particle_wall = testing::pine_table2_particle_wall();
-  return dem;
-}
-
 // The floor contact of particle k as the law sees it (the wall is the second body).
 ContactInput floor_input(const WallField& f, std::size_t k) {
   const ParticleStore& p = f.particles;
@@ -124,7 +116,7 @@ TEST(WallContactBatch, GivesEachContactTheComposedLawInEveryLaneWidth) {
        {choose_contact_law("hertz", "mindlin", "cdt", "none"),
         choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "none"),
         choose_contact_law("hysteretic_nonlinear2", "history", "cdt", "k_nc")}) {
-    const DemParameters dem = pine();
+    const DemParameters dem = testing::pine_table2(kRadius);
     std::vector<std::vector<Vec3>> runs;
     std::string name;
     for (int bits = 128; bits <= std::max(128, lane_bits_available()); bits *= 2) {

@@ -7,11 +7,12 @@
 
 #include "models/chute/chute_release.hpp"
 #include "models/units/angle.hpp"
+#include "tests/support/pine_surface_flow.hpp"
 
 namespace feedflow {
 namespace {
 
-PouliquenLaw pine_like() { return {27 * kDegree, 40 * kDegree, 10e-3, 0.136, 0.0}; }
+using testing::pine_like;
 
 // A 0.1 m layer with a 1 cm sine bump flowing on a periodic 1 m ramp at 29.5 deg (Pouliquen
 // friction, flowing branch) for 0.3 s: the thickness on n cells.

@@ -7,11 +7,12 @@
 
 #include "models/chute/chute_release.hpp"
 #include "models/units/angle.hpp"
+#include "tests/support/pine_surface_flow.hpp"
 
 namespace feedflow {
 namespace {
 
-PouliquenLaw pine_like() { return {27 * kDegree, 40 * kDegree, 10e-3, 0.136, 0.0}; }  // section 3
+using testing::pine_like;
 
 Chute small_chute() {  // reduced-size twin of the seed ramp (2 m ramp, 0.57 m bin, 0.5 m fill)
   Chute c;

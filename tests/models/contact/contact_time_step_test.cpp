@@ -17,7 +17,7 @@ DemContactParameters pine_contact(double friction, double rolling) {  // seed Ta
   return testing::pine_table2_contact(friction, rolling);
 }
 
-DemParameters pine() {
+DemParameters pine_parameters() {
   return {{1.5e-3, 390.0}, pine_contact(0.5, 0.8), pine_contact(0.2, 0.6)};
 }
 
@@ -60,8 +60,8 @@ TEST(ContactTimeStep, HystereticSpringSlopes) {
 // (3.2e-5 s) and Hertz (8.4e-5 s) bounds; the justification names it.
 TEST(ContactTimeStep, PineStepIsLimitedByTheTangentialSpring) {
   const ContactLawChoice seed;
-  const StableTimeStep dt =
-      stable_time_step(pine(), design_springs(pine(), seed, seed, 0.1), TimeStepSettings{});
+  const StableTimeStep dt = stable_time_step(
+      pine_parameters(), design_springs(pine_parameters(), seed, seed, 0.1), TimeStepSettings{});
   std::printf("%s\n", dt.justification.c_str());
   const double m_t = 2.0 / 7.0 * 0.5 * 390.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(1.5e-3, 3);
   const double k1 = 6e8 * 1.5e-4 + 5e4;
@@ -75,8 +75,8 @@ TEST(ContactTimeStep, RayleighLimitsAHertzLawWithFewStepsPerPeriod) {
   const ContactLawChoice hertz = choose_contact_law("hertz", "mindlin", "cdt", "none");
   TimeStepSettings settings;
   settings.steps_per_period = 5;
-  const StableTimeStep dt =
-      stable_time_step(pine(), design_springs(pine(), hertz, hertz, 0.1), settings);
+  const StableTimeStep dt = stable_time_step(
+      pine_parameters(), design_springs(pine_parameters(), hertz, hertz, 0.1), settings);
   std::printf("%s\n", dt.justification.c_str());
   EXPECT_NEAR(dt.value, 0.2 * 1.621e-4, 0.005e-5);
   EXPECT_EQ(dt.justification.find("dt = 3.24e-05 s from the Rayleigh time"), 0u);

@@ -88,14 +88,14 @@ double applied_force(long n) {
   return -3e-2;
 }
 
-struct Row {
+struct ReimpactRow {
   double overlap, force, plastic_overlap;
 };
 
 // The two-sphere rig of the gold-file test (frozen lower sphere, m* = m_upper, LIGGGHTS'
 // velocity-Verlet order), with either our composed law or the independent model.
 template <class NormalForce>
-std::vector<Row> strike(long steps, NormalForce&& normal_force) {
+std::vector<ReimpactRow> strike(long steps, NormalForce&& normal_force) {
   constexpr double dt = 1e-6;
   rig::Sphere lower = rig::make_sphere(1.5e-3, 390.0);
   rig::Sphere upper = lower;
@@ -103,7 +103,7 @@ std::vector<Row> strike(long steps, NormalForce&& normal_force) {
   lower.frozen = true;
   upper.x = Vec3(0, 0, 3e-3 - 1e-9);
   upper.rotation_locked = true;
-  Row row{};
+  ReimpactRow row{};
   auto forces = [&](long n) {
     const ContactInput in = rig::pair_contact(upper, lower, dt);
     if (!(in.overlap > 0.0)) {
@@ -115,7 +115,7 @@ std::vector<Row> strike(long steps, NormalForce&& normal_force) {
     upper.force = Vec3(0, 0, fn * in.normal.z() + applied_force(n));
     row = {in.overlap, fn, d0};
   };
-  std::vector<Row> rows;
+  std::vector<ReimpactRow> rows;
   for (long n = 1; n <= steps; ++n) {
     rig::verlet_step(upper, dt, [&] { forces(n); });
     if (n % 20 == 0) rows.push_back(row);
@@ -124,7 +124,7 @@ std::vector<Row> strike(long steps, NormalForce&& normal_force) {
 }
 
 // `normal` composed with cohesion `none` (the normal force clipped at zero).
-std::vector<Row> strike_with_our_law(long steps, const HystereticNonlinear2& normal) {
+std::vector<ReimpactRow> strike_with_our_law(long steps, const HystereticNonlinear2& normal) {
   using Law = ContactLaw<HystereticNonlinear2, NoTangential, NoRolling, NoCohesion>;
   const Law law(normal, {}, {});
   Law::History h{};
@@ -135,7 +135,7 @@ std::vector<Row> strike_with_our_law(long steps, const HystereticNonlinear2& nor
   });
 }
 
-std::vector<Row> strike_with_the_peer(long steps) {
+std::vector<ReimpactRow> strike_with_the_peer(long steps) {
   PeerModel2 peer(pine());
   return strike(steps, [&](const ContactInput& in, double& d0) {
     const double fn = peer.force(in.overlap, in.normal_velocity, in.effective_mass);
@@ -144,7 +144,8 @@ std::vector<Row> strike_with_the_peer(long steps) {
   });
 }
 
-double worst_relative_overlap(const std::vector<Row>& a, const std::vector<Row>& b) {
+double worst_relative_overlap(const std::vector<ReimpactRow>& a,
+                              const std::vector<ReimpactRow>& b) {
   double worst = 0.0;
   for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
     worst = std::max(worst, std::abs(a[i].overlap / b[i].overlap - 1.0));

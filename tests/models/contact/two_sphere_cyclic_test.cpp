@@ -18,13 +18,13 @@
 namespace feedflow {
 namespace {
 
-struct Row {
+struct GoldRow {
   double time, overlap, velocity, contact_force;
 };
 
-std::vector<Row> read_gold(const std::string& name) {
+std::vector<GoldRow> read_gold(const std::string& name) {
   std::ifstream file(std::string(FEEDFLOW_TEST_DATA_DIR) + "/liggghts-inl/" + name);
-  std::vector<Row> rows;
+  std::vector<GoldRow> rows;
   std::string line;
   std::getline(file, line);  // header
   while (std::getline(file, line)) {
@@ -120,7 +120,7 @@ struct Comparison {
   double worst_landmark = 0.0;   // largest relative error over the ten peak/residual overlaps
 };
 
-Comparison compare(const Trace& trace, const std::vector<Row>& gold,
+Comparison compare(const Trace& trace, const std::vector<GoldRow>& gold,
                    const std::array<double, 10>& landmarks) {
   Comparison c;
   const auto& ours = trace.overlap;

@@ -14,24 +14,22 @@
 namespace feedflow {
 namespace {
 
-const auto kPlane = FlowGeometry::plane;
-const auto kCone = FlowGeometry::conical;
-
 // Section 2 item 6, seed hopper (theta 30 deg, B 60 mm, rho_b 290, per metre of slot):
 // Johanson cohesionless 12.4 kg/s; with the section 1.4 flow function ff_a = 2.78 and 9.0 kg/s.
 TEST(HopperDischarge, JohansonSeedHopper) {
   const auto rho = BulkDensity::constant(290);
-  const auto free =
-      johanson_discharge(kPlane, 30 * kDegree, 0.06, 1.315, FlowFunction::cohesionless(), rho);
+  const auto free = johanson_discharge(FlowGeometry::plane, 30 * kDegree, 0.06, 1.315,
+                                       FlowFunction::cohesionless(), rho);
   EXPECT_NEAR(free.rate, 12.4, 0.05);
   EXPECT_DOUBLE_EQ(free.cohesion_factor, 1.0);
   EXPECT_TRUE(std::isinf(free.actual_flow_factor));
   // Cohesionless closed form: 0.931 rho_b sqrt(g) B^(3/2) at 30 deg.
   EXPECT_NEAR(free.rate / (290 * std::sqrt(9.81) * std::pow(0.06, 1.5)), 0.931, 0.0005);
   const double ff =
-      solve_radial_stress_field(kPlane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree)->flow_factor;
-  const auto cohesive =
-      johanson_discharge(kPlane, 30 * kDegree, 0.06, ff, FlowFunction::linear(0.1, 50), rho);
+      solve_radial_stress_field(FlowGeometry::plane, 30 * kDegree, 50 * kDegree, 8.5 * kDegree)
+          ->flow_factor;
+  const auto cohesive = johanson_discharge(FlowGeometry::plane, 30 * kDegree, 0.06, ff,
+                                           FlowFunction::linear(0.1, 50), rho);
   EXPECT_NEAR(cohesive.actual_flow_factor, 2.78, 0.005);
   EXPECT_NEAR(cohesive.rate, 9.0, 0.05);
   // Per slot: a 0.5 m slot delivers half a metre's worth.
@@ -42,14 +40,17 @@ TEST(HopperDischarge, JohansonSeedHopper) {
 TEST(HopperDischarge, JohansonVanishesAtTheCriticalOutlet) {
   const auto rho = BulkDensity::constant(290);
   const auto f = FlowFunction::linear(0.1, 50);
-  const double bc = jenike_critical_outlet(kPlane, 30 * kDegree, 1.315, f, rho).width;
-  EXPECT_NEAR(johanson_discharge(kPlane, 30 * kDegree, bc * (1 + 1e-9), 1.315, f, rho).rate, 0.0,
-              1e-3);
-  EXPECT_EQ(johanson_discharge(kPlane, 30 * kDegree, 0.9 * bc, 1.315, f, rho).rate, 0.0);
-  EXPECT_GT(johanson_discharge(kPlane, 30 * kDegree, 1.5 * bc, 1.315, f, rho).rate, 1.0);
+  const double bc = jenike_critical_outlet(FlowGeometry::plane, 30 * kDegree, 1.315, f, rho).width;
+  EXPECT_NEAR(
+      johanson_discharge(FlowGeometry::plane, 30 * kDegree, bc * (1 + 1e-9), 1.315, f, rho).rate,
+      0.0, 1e-3);
+  EXPECT_EQ(johanson_discharge(FlowGeometry::plane, 30 * kDegree, 0.9 * bc, 1.315, f, rho).rate,
+            0.0);
+  EXPECT_GT(johanson_discharge(FlowGeometry::plane, 30 * kDegree, 1.5 * bc, 1.315, f, rho).rate,
+            1.0);
   // The cone: W = rho_b pi B^2/4 sqrt(B g / (4 tan theta)) for a cohesionless solid.
-  const auto cone =
-      johanson_discharge(kCone, 30 * kDegree, 0.1, 1.5, FlowFunction::cohesionless(), rho);
+  const auto cone = johanson_discharge(FlowGeometry::conical, 30 * kDegree, 0.1, 1.5,
+                                       FlowFunction::cohesionless(), rho);
   EXPECT_NEAR(cone.rate, 290 * std::numbers::pi * 0.01 / 4 *
                              std::sqrt(0.1 * 9.81 / (4 * std::tan(30 * kDegree))), 1e-12);
 }
@@ -108,18 +109,19 @@ TEST(HopperDischarge, T7FlatSlotAndSeedHopper) {
 // form refuses phi < 19.5 deg.
 TEST(HopperDischarge, HourglassUpperBound) {
   const double scale = 290 * std::sqrt(9.81) * std::pow(0.06, 1.5);
-  const double w = hourglass_rate(kPlane, 290, 0.06, 30 * kDegree, 40 * kDegree);
+  const double w = hourglass_rate(FlowGeometry::plane, 290, 0.06, 30 * kDegree, 40 * kDegree);
   EXPECT_NEAR(w / scale, 1.54, 0.005);
   EXPECT_GT(w, brown_richards_rate_per_metre(290, 0.06, 30 * kDegree));
   EXPECT_GT(w, beverloo_slot_rate_per_metre(290, 0.06, 0.82e-3));
-  EXPECT_LT(hourglass_rate(kPlane, 290, 0.06, 30 * kDegree, 40 * kDegree, 0.2), w);
+  EXPECT_LT(hourglass_rate(FlowGeometry::plane, 290, 0.06, 30 * kDegree, 40 * kDegree, 0.2), w);
   // Cone, tall: V^2 = g r0 (k+1)/(2k-3).
   const double k = (1 + std::sin(40 * kDegree)) / (1 - std::sin(40 * kDegree));
   const double r0 = 0.05 / std::sin(30 * kDegree);
-  EXPECT_NEAR(hourglass_rate(kCone, 290, 0.1, 30 * kDegree, 40 * kDegree),
+  EXPECT_NEAR(hourglass_rate(FlowGeometry::conical, 290, 0.1, 30 * kDegree, 40 * kDegree),
               290 * 2 * std::numbers::pi * r0 * r0 * (1 - std::cos(30 * kDegree)) *
-                  std::sqrt(9.81 * r0 * (k + 1) / (2 * k - 3)), 1e-9);
-  EXPECT_THROW(hourglass_rate(kPlane, 290, 0.06, 30 * kDegree, 15 * kDegree),
+                  std::sqrt(9.81 * r0 * (k + 1) / (2 * k - 3)),
+              1e-9);
+  EXPECT_THROW(hourglass_rate(FlowGeometry::plane, 290, 0.06, 30 * kDegree, 15 * kDegree),
                std::invalid_argument);
 }
 
@@ -131,16 +133,17 @@ TEST(HopperDischarge, CarletonAirDragOnLightBiomass) {
   for (const auto& r : {Row{433, 0.82e-3, 0.11}, Row{433, 0.38e-3, 0.32}, Row{600, 0.82e-3, 0.08},
                         Row{600, 0.38e-3, 0.25}, Row{1000, 0.82e-3, 0.05},
                         Row{1000, 0.38e-3, 0.17}})
-    EXPECT_NEAR(1 - air_drag_factor(kPlane, 30 * kDegree, 0.06, {r.rho_p, r.d}), r.drop, 0.006)
+    EXPECT_NEAR(1 - air_drag_factor(FlowGeometry::plane, 30 * kDegree, 0.06, {r.rho_p, r.d}),
+                r.drop, 0.006)
         << "rho_p " << r.rho_p << " d " << r.d;
   AirDrag vacuum{433, 0.38e-3, 0.0, 0.0};
-  EXPECT_DOUBLE_EQ(air_drag_factor(kPlane, 30 * kDegree, 0.06, vacuum), 1.0);
+  EXPECT_DOUBLE_EQ(air_drag_factor(FlowGeometry::plane, 30 * kDegree, 0.06, vacuum), 1.0);
   // Conical: 4 V0^2 sin theta / B = g without drag.
-  EXPECT_NEAR(carleton_outlet_velocity(kCone, 30 * kDegree, 0.1, vacuum),
+  EXPECT_NEAR(carleton_outlet_velocity(FlowGeometry::conical, 30 * kDegree, 0.1, vacuum),
               std::sqrt(9.81 * 0.1 / (4 * 0.5)), 1e-12);
   // The drag term balances: plug V0 back into the plane equation.
   const AirDrag pine{433, 0.82e-3};
-  const double v = carleton_outlet_velocity(kPlane, 30 * kDegree, 0.06, pine);
+  const double v = carleton_outlet_velocity(FlowGeometry::plane, 30 * kDegree, 0.06, pine);
   const double drag = 15 * std::cbrt(1.2) * std::pow(1.8e-5, 2.0 / 3) * std::pow(v, 4.0 / 3) /
                       (433 * std::pow(0.82e-3, 5.0 / 3));
   EXPECT_NEAR(2 * v * v * 0.5 / 0.06 + drag, 9.81, 1e-9);

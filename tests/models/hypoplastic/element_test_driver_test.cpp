@@ -11,11 +11,12 @@
 #include "models/hypoplastic/stress_invariants.hpp"
 #include "models/material/bulk_compressibility.hpp"
 #include "models/units/angle.hpp"
+#include "tests/support/pine_table1.hpp"
 
 namespace feedflow {
 namespace {
 
-const HypoplasticModel kPine = make_hypoplastic_model(loblolly_pine_table1());
+using testing::kPine;
 
 std::vector<ElementTestSample> run(const HypoplasticModel& m, ElementTestKind kind, double p0,
                                    double e0, double strain, int samples = 40) {

@@ -6,11 +6,12 @@
 #include "models/hypoplastic/stress_rate.hpp"
 #include "models/hypoplastic/stress_terms.hpp"
 #include "models/material/bulk_compressibility.hpp"
+#include "tests/support/pine_table1.hpp"
 
 namespace feedflow {
 namespace {
 
-const HypoplasticModel kPine = make_hypoplastic_model(loblolly_pine_table1());
+using testing::kPine;
 
 Tensor3 isotropic(double p) { return -p * Tensor3::Identity(); }
 Tensor3 triaxial(double axial, double lateral) {  // compressive magnitudes

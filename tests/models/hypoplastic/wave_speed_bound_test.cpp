@@ -5,11 +5,12 @@
 #include <random>
 
 #include "models/hypoplastic/wave_speed_bound.hpp"
+#include "tests/support/pine_table1.hpp"
 
 namespace feedflow {
 namespace {
 
-const HypoplasticModel kPine = make_hypoplastic_model(loblolly_pine_table1());
+using testing::kPine;
 
 // Table 1 at p = 2 kPa, e = 0.71: M_b = 5.4e5 Pa, c = 43 m/s at 290 kg/m^3, and 5 mm cells give
 // L/(sqrt3 c) ~ 7e-5 s (models.md 5.2).
