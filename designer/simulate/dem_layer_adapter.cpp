@@ -13,7 +13,7 @@ namespace {
 constexpr double kDefaultSlab = 0.015;         // [m] the seed's slab, five diameters
 constexpr double kLayerSampleInterval = 0.02;  // [s]
 constexpr double kFirstJolt = 0.1;  // [s] after the tilt before a rest counts (run_layer's)
-
+constexpr std::size_t kAfterTiltColumn = 1, kSpeedColumn = 2;  // of columns()
 }  // namespace
 
 StoppingLayerSpec stopping_layer_spec(const Case& c, const DemSettings& settings) {
@@ -97,11 +97,15 @@ class DemLayerAdapter final : public SceneAdapter {
       return std::vector<double>{e.time(), e.time() - scene_.tilt_time(), scene_.downslope_speed(),
                                  e.kinetic_energy(), scene_.thickness()};
     };
-    if (!request_.end_time)
-      run.stop = [this](const TimeSeries&) {
-        if (scene_.engine().time() - scene_.tilt_time() >= kFirstJolt && scene_.at_rest())
+    if (!request_.end_time && !request_.case_data.dem.end_time)
+      run.stop = [this](const TimeSeries& series) {
+        const double t = scene_.engine().time() - scene_.tilt_time();
+        if (t >= kFirstJolt && scene_.at_rest())
           return std::string("the layer is at rest: kinetic energy per particle below 1e-3 m g d");
         if (scene_.runs_away()) return run_away_reason();
+        if (t >= kStoppingLayerRunCap &&
+            layer_slowing_ratio(series, kAfterTiltColumn, kSpeedColumn, t) >= kLayerSlowingRatio)
+          return steady_reason(series, t);
         return std::string();
       };
     const double tilt = scene_.tilt_time(), launch = scene_.launch_speed();
@@ -116,7 +120,7 @@ class DemLayerAdapter final : public SceneAdapter {
     const bool at_rest = scene_.at_rest();
     const double after_tilt = e.time() - scene_.tilt_time();
     double peak = 0.0;
-    for (const auto& row : run.series.rows()) peak = std::max(peak, row[2]);
+    for (const auto& row : run.series.rows()) peak = std::max(peak, row[kSpeedColumn]);
     const std::string law = contact_law_name(e.effective_law());
     auto& results = record.results;
     results.emplace_back("layer_state",
@@ -148,7 +152,7 @@ class DemLayerAdapter final : public SceneAdapter {
                          Estimate{after_tilt, "s", std::nullopt, std::nullopt,
                                   at_rest              ? "to rest"
                                   : scene_.runs_away() ? "to run away (flows on)"
-                                                       : "run length (still flowing)",
+                                                       : "run length (still moving)",
                                   Rung::L3, ""});
     results.emplace_back("run_wall_time",
                          Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
@@ -159,12 +163,22 @@ class DemLayerAdapter final : public SceneAdapter {
     else if (!at_rest && scene_.runs_away())
       notes.push_back(run_away_reason() + ": thicker than h_stop at " +
                       format_quantity(chute_.angle, "deg", 3));
+    else if (!at_rest && layer_slowing_ratio(run.series, kAfterTiltColumn, kSpeedColumn,
+                                             after_tilt) >= kLayerSlowingRatio)
+      notes.push_back(steady_reason(run.series, after_tilt) + ": thicker than h_stop at " +
+                      format_quantity(chute_.angle, "deg", 3));
     else if (!at_rest)
-      notes.push_back("the layer still flows " + format_quantity(after_tilt, "s", 3) +
-                      " after the tilt at " + format_quantity(scene_.downslope_speed(), "m/s", 3) +
-                      ": thicker than h_stop at " + format_quantity(chute_.angle, "deg", 3) +
-                      " as far as this run shows (a layer near h_stop slows for long before "
-                      "it stops)");
+      notes.push_back(
+          "the layer still moves " + format_quantity(after_tilt, "s", 3) + " after the tilt at " +
+          format_quantity(scene_.downslope_speed(), "m/s", 3) +
+          ", still slowing (its mean speed over the last " +
+          format_quantity(kLayerSlowingWindow, "s", 2) + " is " +
+          format_number(layer_slowing_ratio(run.series, kAfterTiltColumn, kSpeedColumn, after_tilt),
+                        2) +
+          " of that " + format_quantity(kLayerSlowingLag, "s", 2) +
+          " earlier): called flowing, thicker than h_stop at " +
+          format_quantity(chute_.angle, "deg", 3) +
+          " as far as this run shows, though it may yet come to rest");
     if (const std::string w = e.spring_warning(); !w.empty()) notes.push_back(w);
   }
 
@@ -218,7 +232,15 @@ class DemLayerAdapter final : public SceneAdapter {
     const Case& c = request_.case_data;
     return request_.end_time ? *request_.end_time
            : c.dem.end_time  ? *c.dem.end_time
-                             : kStoppingLayerRunCap;
+                             : kStoppingLayerRunLimit;
+  }
+
+  std::string steady_reason(const TimeSeries& series, double t) const {
+    return "the layer flows on steadily " + format_quantity(t, "s", 3) +
+           " after the tilt: its mean speed down the slope over the last " +
+           format_quantity(kLayerSlowingWindow, "s", 2) + " is " +
+           format_number(layer_slowing_ratio(series, kAfterTiltColumn, kSpeedColumn, t), 2) +
+           " of that " + format_quantity(kLayerSlowingLag, "s", 2) + " earlier";
   }
 
   std::string run_away_reason() const {

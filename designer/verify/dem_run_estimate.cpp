@@ -78,7 +78,7 @@ DemRunEstimate estimate_dem_layer_run(const Case& c) {
     return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, *c.dem.end_time,
                               *c.dem.end_time);
   return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, kTypicalRun,
-                            kStoppingLayerRunCap);
+                            kStoppingLayerRunLimit);
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {

@@ -46,8 +46,8 @@ DemRunEstimate estimate_dem_drum_run(const Case& c);
 
 // The estimate for one DEM stopping layer of the chute case `c` ([dem] stopping_layer set): its
 // fill, launch and the run after the tilt (dem.end_time, else 1.5 s as layers end at rest or
-// run away, and at most the 4 s cap), all its spheres all the while. Throws InputError as the scene
-// does.
+// run away, and at most the 10 s limit), all its spheres all the while. Throws InputError as the
+// scene does.
 DemRunEstimate estimate_dem_layer_run(const Case& c);
 
 // The estimate for one DEM run of the hopper case `c` (its [dem] settings as the run will have

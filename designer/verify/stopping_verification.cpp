@@ -138,7 +138,7 @@ StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignR
   plan.cost = "about " + format_duration(plan.seconds) +
               " by its estimate: " + std::to_string(plan.runs) + " layers, each at " +
               mm(*middle.dem.stopping_layer) + " " + each.text() +
-              " (a layer ends at rest or run away, at most " +
+              " (a layer ends at rest, run away or flowing steadily, at most " +
               format_quantity(each.run_cap, "s", 3) + " after the tilt)";
   return plan;
 }

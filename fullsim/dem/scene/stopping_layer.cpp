@@ -151,6 +151,33 @@ double StoppingLayerScene::thickness() const {
   return sum / static_cast<double>(bins);
 }
 
+namespace {
+
+// The mean of `speed_column` over the rows whose `time_column` lies in [from, to]; 0 without one.
+double mean_over(const TimeSeries& series, std::size_t time_column, std::size_t speed_column,
+                 double from, double to) {
+  double sum = 0.0;
+  int n = 0;
+  for (const auto& row : series.rows())
+    if (row[time_column] >= from && row[time_column] <= to) {
+      sum += row[speed_column];
+      ++n;
+    }
+  return n > 0 ? sum / n : 0.0;
+}
+
+}  // namespace
+
+double layer_slowing_ratio(const TimeSeries& series, std::size_t time_column,
+                           std::size_t speed_column, double t) {
+  const double earlier =
+      mean_over(series, time_column, speed_column, t - kLayerSlowingLag - kLayerSlowingWindow,
+                t - kLayerSlowingLag);
+  return earlier > 0.0
+             ? mean_over(series, time_column, speed_column, t - kLayerSlowingWindow, t) / earlier
+             : 1.0;
+}
+
 LayerOutcome run_layer(StoppingLayerScene& layer, double max_time, std::ostream& log,
                        double sample) {
   LayerOutcome o;

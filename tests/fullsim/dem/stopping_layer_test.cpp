@@ -77,5 +77,24 @@ TEST(StoppingLayer, AThinLayerStopsWhereAThickOneFlows) {
   EXPECT_GT(flows.thickness, thick->spec().thickness);
 }
 
+// The slowing rule on series shaped as the seed's layers at 35 deg: one held at its launch speed
+// flows steadily (ratio 1), one falling from its launch speed at 2 s to 0.36 of it at 4 s still
+// slows (about 0.6), and one sampled for less than the lag has no earlier speed (1).
+TEST(StoppingLayer, ASlowingLayerIsToldFromASteadyOne) {
+  const auto series = [](auto speed) {
+    TimeSeries s({{"time_after_tilt", "s"}, {"downslope_speed", "m/s"}});
+    for (int k = 0; k <= 200; ++k) s.add_row({0.02 * k, speed(0.02 * k)});
+    return s;
+  };
+  const TimeSeries steady = series([](double) { return 0.4; });
+  const TimeSeries slowing =
+      series([](double t) { return t < 2.0 ? 0.37 : 0.37 * (1.0 - 0.32 * (t - 2.0)); });
+  EXPECT_NEAR(layer_slowing_ratio(steady, 0, 1, 4.0), 1.0, 1e-12);
+  EXPECT_GE(layer_slowing_ratio(steady, 0, 1, 4.0), kLayerSlowingRatio);
+  EXPECT_NEAR(layer_slowing_ratio(slowing, 0, 1, 4.0), 0.59, 0.02);
+  EXPECT_LT(layer_slowing_ratio(slowing, 0, 1, 4.0), kLayerSlowingRatio);
+  EXPECT_EQ(layer_slowing_ratio(slowing, 0, 1, 0.4), 1.0);
+}
+
 }  // namespace
 }  // namespace feedflow
