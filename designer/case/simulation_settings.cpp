@@ -36,8 +36,7 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
       optional_number_field<S>(
           "end_time", &S::end_time, dim::time, "s", kTimeRange,
           "simulated time after filling (default: until converged or stopped; a stopping "
-          "layer: at rest, run away, steady from 4 s after the tilt on, or 10 s; set, only the end "
-          "counts)"),
+          "layer: at rest, run away, steady from 4 s after the tilt on, or at most 10 s, or this)"),
       optional_number_field<S>("snapshot_interval", &S::snapshot_interval, dim::time, "s",
                                kTimeRange, "time between particle snapshots"),
       optional_number_field<S>("time_step", &S::time_step, dim::time, "us",

@@ -97,7 +97,7 @@ class DemLayerAdapter final : public SceneAdapter {
       return std::vector<double>{e.time(), e.time() - scene_.tilt_time(), scene_.downslope_speed(),
                                  e.kinetic_energy(), scene_.thickness()};
     };
-    if (!request_.end_time && !request_.case_data.dem.end_time)
+    if (!request_.end_time)
       run.stop = [this](const TimeSeries& series) {
         const double t = scene_.engine().time() - scene_.tilt_time();
         if (t >= kFirstJolt && scene_.at_rest())

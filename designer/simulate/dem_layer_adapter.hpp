@@ -5,7 +5,7 @@
 // then tilted to the chute's angle; sampled every 20 ms (mean speed down the slope, kinetic
 // energy, thickness); stopped once it is at rest (after 0.1 s), runs away (its mean speed past
 // 1.5 times the launch's: it flows on), or flows steadily from 4 s after the tilt on (no longer
-// slowing), else at 10 s after the tilt (--time or [dem] end_time: then only the end counts).
+// slowing), else at 10 s after the tilt ([dem] end_time instead; --time: only its end counts).
 // Measured: whether it came to rest, and its thickness, speed and time. A thickness that rests is
 // at most h_stop at the angle, one that flows above it, so `design --verify dem` brackets h_stop by
 // a bisection of such runs.

@@ -74,11 +74,9 @@ DemRunEstimate estimate_dem_layer_run(const Case& c) {
   constexpr double kTypicalRun = 1.5;
   const DemSettings settings = dem_case_settings(c);
   StoppingLayerScene scene(settings, stopping_layer_spec(c, settings));
-  if (c.dem.end_time)
-    return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, *c.dem.end_time,
-                              *c.dem.end_time);
-  return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, kTypicalRun,
-                            kStoppingLayerRunLimit);
+  const double limit = c.dem.end_time.value_or(kStoppingLayerRunLimit);
+  return whole_bed_estimate(scene.engine(), scene.rain(), kLaunch, std::min(kTypicalRun, limit),
+                            limit);
 }
 
 DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {

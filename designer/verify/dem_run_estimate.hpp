@@ -45,8 +45,8 @@ struct DemRunEstimate {
 DemRunEstimate estimate_dem_drum_run(const Case& c);
 
 // The estimate for one DEM stopping layer of the chute case `c` ([dem] stopping_layer set): its
-// fill, launch and the run after the tilt (dem.end_time, else 1.5 s as layers end at rest or
-// run away, and at most the 10 s limit), all its spheres all the while. Throws InputError as the
+// fill, launch and the run after the tilt (1.5 s as layers end at rest or run away, at most
+// dem.end_time or the 10 s limit), all its spheres all the while. Throws InputError as the
 // scene does.
 DemRunEstimate estimate_dem_layer_run(const Case& c);
 

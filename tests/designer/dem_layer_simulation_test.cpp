@@ -52,6 +52,17 @@ TEST(DemLayerSimulation, TwoDiametersComeToRestAtThirtySevenDegrees) {
   fs::remove_all(r.out);
 }
 
+// [dem] end_time bounds a layer's run, it does not fix its length: with 3 s set the layer still
+// ends once at rest, before 2 s.
+TEST(DemLayerSimulation, EndTimeIsALimitNotALength) {
+  const SimulationRequest r = layer_request({parse_set_override("dem.end_time=3s")}, "limit");
+  const SimulationOutcome o = simulate(r);
+  EXPECT_EQ(std::get<std::string>(find_estimate(o.record.results, "layer_state")->value),
+            "at rest");
+  EXPECT_LT(std::get<double>(find_estimate(o.record.results, "time_after_tilt")->value), 2.0);
+  fs::remove_all(r.out);
+}
+
 // A restart continues the tilted layer: run to 0.1 s after the tilt (checkpoint), then from it
 // to 0.2 s straight, and to 0.15 s (checkpoint) then on to 0.2 s: the same particles' bits and
 // series rows, whose time after the tilt is read from the checkpoint (not the restart's own
