@@ -103,9 +103,9 @@ class DemLayerAdapter final : public SceneAdapter {
         if (t >= kFirstJolt && scene_.at_rest())
           return std::string("the layer is at rest: kinetic energy per particle below 1e-3 m g d");
         if (scene_.runs_away()) return run_away_reason();
-        if (t >= kStoppingLayerRunCap &&
-            layer_slowing_ratio(series, kAfterTiltColumn, kSpeedColumn, t) >= kLayerSlowingRatio)
-          return steady_reason(series, t);
+        if (t < kStoppingLayerRunCap) return std::string();
+        const double slowing = layer_slowing_ratio(series, kAfterTiltColumn, kSpeedColumn, t);
+        if (slowing >= kLayerSlowingRatio) return steady_reason(slowing, t);
         return std::string();
       };
     const double tilt = scene_.tilt_time(), launch = scene_.launch_speed();
@@ -117,8 +117,10 @@ class DemLayerAdapter final : public SceneAdapter {
 
   void measure(const SceneRunResult& run, DesignRecord& record) override {
     const DemEngine& e = scene_.engine();
-    const bool at_rest = scene_.at_rest();
+    const bool at_rest = scene_.at_rest(), ran_away = !at_rest && scene_.runs_away();
     const double after_tilt = e.time() - scene_.tilt_time();
+    const double slowing =
+        layer_slowing_ratio(run.series, kAfterTiltColumn, kSpeedColumn, after_tilt);
     double peak = 0.0;
     for (const auto& row : run.series.rows()) peak = std::max(peak, row[kSpeedColumn]);
     const std::string law = contact_law_name(e.effective_law());
@@ -148,37 +150,30 @@ class DemLayerAdapter final : public SceneAdapter {
                                   "DEM: largest mean speed down the slope sampled after the tilt "
                                   "(the launch's included)",
                                   Rung::L3, ""});
-    results.emplace_back("time_after_tilt",
-                         Estimate{after_tilt, "s", std::nullopt, std::nullopt,
-                                  at_rest              ? "to rest"
-                                  : scene_.runs_away() ? "to run away (flows on)"
-                                                       : "run length (still moving)",
-                                  Rung::L3, ""});
+    results.emplace_back("time_after_tilt", Estimate{after_tilt, "s", std::nullopt, std::nullopt,
+                                                     at_rest    ? "to rest"
+                                                     : ran_away ? "to run away (flows on)"
+                                                                : "run length (still moving)",
+                                                     Rung::L3, ""});
     results.emplace_back("run_wall_time",
                          Estimate{run.wall_seconds, "s", std::nullopt, std::nullopt,
                                   "wall time after the tilt", Rung::L3, ""});
     auto& notes = record.verdict.reasons;
     if (run.end == RunEnd::interrupted)
       notes.push_back("interrupted: the layer's state is the state so far");
-    else if (!at_rest && scene_.runs_away())
+    else if (ran_away)
       notes.push_back(run_away_reason() + ": thicker than h_stop at " +
                       format_quantity(chute_.angle, "deg", 3));
-    else if (!at_rest && layer_slowing_ratio(run.series, kAfterTiltColumn, kSpeedColumn,
-                                             after_tilt) >= kLayerSlowingRatio)
-      notes.push_back(steady_reason(run.series, after_tilt) + ": thicker than h_stop at " +
+    else if (!at_rest && slowing >= kLayerSlowingRatio)
+      notes.push_back(steady_reason(slowing, after_tilt) + ": thicker than h_stop at " +
                       format_quantity(chute_.angle, "deg", 3));
     else if (!at_rest)
-      notes.push_back(
-          "the layer still moves " + format_quantity(after_tilt, "s", 3) + " after the tilt at " +
-          format_quantity(scene_.downslope_speed(), "m/s", 3) +
-          ", still slowing (its mean speed over the last " +
-          format_quantity(kLayerSlowingWindow, "s", 2) + " is " +
-          format_number(layer_slowing_ratio(run.series, kAfterTiltColumn, kSpeedColumn, after_tilt),
-                        2) +
-          " of that " + format_quantity(kLayerSlowingLag, "s", 2) +
-          " earlier): called flowing, thicker than h_stop at " +
-          format_quantity(chute_.angle, "deg", 3) +
-          " as far as this run shows, though it may yet come to rest");
+      notes.push_back("the layer still moves " + format_quantity(after_tilt, "s", 3) +
+                      " after the tilt at " + format_quantity(scene_.downslope_speed(), "m/s", 3) +
+                      ", still slowing (" + slowing_text(slowing) +
+                      "): called flowing, thicker than h_stop at " +
+                      format_quantity(chute_.angle, "deg", 3) +
+                      " as far as this run shows, though it may yet come to rest");
     if (const std::string w = e.spring_warning(); !w.empty()) notes.push_back(w);
   }
 
@@ -235,12 +230,15 @@ class DemLayerAdapter final : public SceneAdapter {
                              : kStoppingLayerRunLimit;
   }
 
-  std::string steady_reason(const TimeSeries& series, double t) const {
-    return "the layer flows on steadily " + format_quantity(t, "s", 3) +
-           " after the tilt: its mean speed down the slope over the last " +
-           format_quantity(kLayerSlowingWindow, "s", 2) + " is " +
-           format_number(layer_slowing_ratio(series, kAfterTiltColumn, kSpeedColumn, t), 2) +
+  static std::string slowing_text(double ratio) {
+    return "its mean speed down the slope over the last " +
+           format_quantity(kLayerSlowingWindow, "s", 2) + " is " + format_number(ratio, 2) +
            " of that " + format_quantity(kLayerSlowingLag, "s", 2) + " earlier";
+  }
+
+  static std::string steady_reason(double ratio, double t) {
+    return "the layer flows on steadily " + format_quantity(t, "s", 3) +
+           " after the tilt: " + slowing_text(ratio);
   }
 
   std::string run_away_reason() const {
