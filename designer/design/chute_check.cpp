@@ -40,6 +40,19 @@ void stopping_results(const Chute& chute, const Material& m, const StoppingThick
   const StoppingThickness& nominal = stopping.nominal;
   results.emplace_back("deposit", labelled(to_string(nominal.outcome), model));
   if (nominal.outcome != DepositOutcome::Deposit) notes.push_back({std::nullopt, "deposit", nominal.words});
+  if (stopping.edge) {
+    results.emplace_back("deposit_within_uncertainty", labelled(to_string(*stopping.edge), model));
+    const std::string at = " at " + format_quantity(chute.angle, "deg", 4) + " (theta1 ";
+    const std::string theta1 = format_quantity(stopping.edge_theta1, "deg", 4) + ")";
+    notes.push_back({std::nullopt, "deposit_within_uncertainty",
+                     *stopping.edge == DepositOutcome::NeverFlowsBelowTheta1
+                         ? "within the law's uncertainty the material may never flow" + at +
+                               "up to " + theta1 +
+                               ": the stopping thickness has no upper bound (the band shown is "
+                               "that of the coefficients that leave a layer)"
+                         : "within the law's uncertainty the material may flow" + at + "down to " +
+                               theta1 + " and leave a layer"});
+  }
   if (nominal.outcome == DepositOutcome::NeverFlowsBelowTheta1) return;
   results.emplace_back("stopping_thickness", length_estimate(nominal.thickness, stopping.low,
                                                              stopping.high, model, stop.rung));
@@ -145,11 +158,24 @@ Material chute_material(const Material& m) {
 
 StoppingThicknessBand stopping_thickness_band(const Material& m, const StoppingThicknessModel& stop,
                                               double angle) {
-  StoppingThicknessBand out{stop.evaluate(pouliquen_law_of(*m.surface_flow), m, angle), 0.0, 0.0};
+  StoppingThicknessBand out;
+  out.nominal = stop.evaluate(pouliquen_law_of(*m.surface_flow), m, angle);
   Band band;
   band.add(out.nominal.thickness);
-  for (const auto& corner : corner_laws(*m.surface_flow))
-    band.add(stop.evaluate(corner, m, angle).thickness);
+  const auto flows = [](DepositOutcome o) { return o != DepositOutcome::NeverFlowsBelowTheta1; };
+  for (const auto& corner : corner_laws(*m.surface_flow)) {
+    const StoppingThickness at_corner = stop.evaluate(corner, m, angle);
+    band.add(at_corner.thickness);
+    // The corner furthest from the nominal law's outcome: the highest theta1 that never flows,
+    // or the lowest that lets the material flow.
+    if (flows(at_corner.outcome) == flows(out.nominal.outcome)) continue;
+    const bool further = !out.edge || (flows(at_corner.outcome) ? corner.theta1 < out.edge_theta1
+                                                                : corner.theta1 > out.edge_theta1);
+    if (further) {
+      out.edge = at_corner.outcome;
+      out.edge_theta1 = corner.theta1;
+    }
+  }
   const double error = calibration_error(m);
   band.add(out.nominal.thickness * (1.0 - error));
   band.add(out.nominal.thickness * (1.0 + error));

@@ -25,9 +25,15 @@ Material chute_material(const Material& m);
 
 // The chosen law's stopping thickness at `angle` (rad), and its band over the uncertainty of
 // theta1, theta2 and L, widened by a chute calibration's largest error. `m`: a chute_material.
+// Near theta1 the corners need not agree on whether the material flows at all: `edge` is then
+// the outcome of a corner that disagrees with the nominal law (a corner that never flows leaves
+// the band without a top; the band's numbers are those of the corners that leave a layer), and
+// `edge_theta1` that corner's theta1.
 struct StoppingThicknessBand {
   StoppingThickness nominal;
   double low = 0.0, high = 0.0;  // [m]
+  std::optional<DepositOutcome> edge;
+  double edge_theta1 = 0.0;  // [rad]
 };
 StoppingThicknessBand stopping_thickness_band(const Material& m, const StoppingThicknessModel& stop,
                                               double angle);

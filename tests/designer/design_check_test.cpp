@@ -6,8 +6,10 @@
 #include <cmath>
 
 #include "designer/case/case_loader.hpp"
+#include "designer/design/chute_check.hpp"
 #include "designer/design/design_check.hpp"
 #include "models/core/errors.hpp"
+#include "models/units/angle.hpp"
 
 namespace feedflow {
 namespace {
@@ -253,6 +255,33 @@ TEST(ChuteCheck, SeedAnglesFlowAndThinnerAtSteeper) {
   const DesignRecord flat = check("cases/inclined_plane_29_5.toml", {{"chute.angle", "20 deg"}}, fast);
   EXPECT_EQ(flat.verdict.status, VerdictStatus::fail);
   EXPECT_EQ(text(flat, "deposit"), "never flows (below theta1)");
+}
+
+// Within the law's uncertainty of theta1 (1 deg) whether the material flows at all is open:
+// half a degree above theta1 a layer stays behind but a corner never flows, so the verdict is
+// MARGINAL and no allowed deposit can pass (the band has no top); half a degree below, the
+// material never flows by the nominal law but may by a corner: MARGINAL, not FAIL.
+TEST(ChuteCheck, WhetherItFlowsNearTheta1IsMarginal) {
+  const std::vector<std::string> fast{"chute.deposit=none"};
+  const double theta1 = in_degrees(
+      chute_material(load_case("cases/inclined_plane_29_5.toml").material).surface_flow->theta1);
+  const auto at = [&](double degrees, std::vector<SetOverride> more = {}) {
+    more.push_back({"chute.angle", std::to_string(degrees) + " deg"});
+    return check("cases/inclined_plane_29_5.toml", more, fast);
+  };
+  const DesignRecord above = at(theta1 + 0.5);
+  EXPECT_EQ(text(above, "deposit"), "a layer stays behind");
+  EXPECT_EQ(text(above, "deposit_within_uncertainty"), "never flows (below theta1)");
+  EXPECT_EQ(above.verdict.status, VerdictStatus::marginal) << record_reasons(above);
+  EXPECT_EQ(at(theta1 + 0.5, {{"design.max_stopping_thickness", "10 m"}}).verdict.status,
+            VerdictStatus::marginal);
+  const DesignRecord below = at(theta1 - 0.5);
+  EXPECT_EQ(text(below, "deposit"), "never flows (below theta1)");
+  EXPECT_EQ(text(below, "deposit_within_uncertainty"), "a layer stays behind");
+  EXPECT_EQ(below.verdict.status, VerdictStatus::marginal) << record_reasons(below);
+  // Clear of the uncertainty the corners agree: no edge result.
+  EXPECT_THROW(result(at(theta1 + 1.5), "deposit_within_uncertainty"), std::runtime_error);
+  EXPECT_EQ(at(theta1 - 1.5).verdict.status, VerdictStatus::fail);
 }
 
 // The allowed deposit is judged against the stopping-thickness band (at 37 deg 25.9 mm, band
