@@ -2,9 +2,12 @@
 // rough ramp, filled under gravity normal to the ramp, then tilted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <sstream>
+#include <vector>
 
 #include "fullsim/dem/scene/stopping_layer.hpp"
 #include "models/units/angle.hpp"
@@ -79,11 +82,12 @@ TEST(StoppingLayer, AThinLayerStopsWhereAThickOneFlows) {
 
 // The slowing rule on series shaped as the seed's layers at 35 deg: one held at its launch speed
 // flows steadily (ratio 1), one falling from its launch speed at 2 s to 0.36 of it at 4 s still
-// slows (about 0.6), and one sampled for less than the lag has no earlier speed (1).
+// slows (about 0.6), and one sampled for less than the lag has no earlier speed (1); so does
+// the 82.4 mm layer at 34 deg (0.86 at 4 s), while a steady layer swinging by 15 % passes.
 TEST(StoppingLayer, ASlowingLayerIsToldFromASteadyOne) {
   const auto series = [](auto speed) {
     TimeSeries s({{"time_after_tilt", "s"}, {"downslope_speed", "m/s"}});
-    for (int k = 0; k <= 200; ++k) s.add_row({0.02 * k, speed(0.02 * k)});
+    for (int k = 0; k <= 300; ++k) s.add_row({0.02 * k, speed(0.02 * k)});  // 6 s
     return s;
   };
   const TimeSeries steady = series([](double) { return 0.4; });
@@ -94,6 +98,25 @@ TEST(StoppingLayer, ASlowingLayerIsToldFromASteadyOne) {
   EXPECT_NEAR(layer_slowing_ratio(slowing, 0, 1, 4.0), 0.59, 0.02);
   EXPECT_LT(layer_slowing_ratio(slowing, 0, 1, 4.0), kLayerSlowingRatio);
   EXPECT_EQ(layer_slowing_ratio(slowing, 0, 1, 0.4), 1.0);
+  // The seed's 82.4 mm layer at 34 deg, its mean speed every 0.2 s after the tilt (particle
+  // snapshots): falling from 0.51 to 0.30 m/s over 4 s with a pause; at 4 s it still slows.
+  const std::vector<double> at_34{0.456, 0.509, 0.513, 0.497, 0.479, 0.467, 0.430,
+                                  0.416, 0.365, 0.351, 0.319, 0.325, 0.329, 0.336,
+                                  0.355, 0.347, 0.336, 0.312, 0.308, 0.290, 0.298};
+  const TimeSeries falling = series([&](double t) {
+    const double k = std::min(t / 0.2, at_34.size() - 1.0);
+    const std::size_t i = std::min(static_cast<std::size_t>(k), at_34.size() - 2);
+    return at_34[i] + (k - i) * (at_34[i + 1] - at_34[i]);
+  });
+  EXPECT_LT(layer_slowing_ratio(falling, 0, 1, 4.0), kLayerSlowingRatio);
+  // A steady layer whose speed swings by 15 % over 1.4 s passes the rule within a swing.
+  const TimeSeries swinging = series(
+      [](double t) { return 0.45 * (1.0 + 0.15 * std::sin(2.0 * std::numbers::pi * t / 1.4)); });
+  bool steady_within_a_swing = false;
+  for (double t = 4.0; t <= 5.4; t += 0.02)
+    steady_within_a_swing =
+        steady_within_a_swing || layer_slowing_ratio(swinging, 0, 1, t) >= kLayerSlowingRatio;
+  EXPECT_TRUE(steady_within_a_swing);
 }
 
 }  // namespace
