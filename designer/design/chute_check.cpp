@@ -72,14 +72,20 @@ void stopping_results(const Chute& chute, const Material& m, const StoppingThick
 // Rung L1: the release from the bin through the gate, run to rest; its band spans L0's.
 void deposit_results(const ChuteDeposit& d, const ChuteDepositModel& row, Estimates& results) {
   const RampFlowResult& run = d.run;
-  const Estimate& stop = *find_estimate(results, "stopping_thickness");
   const std::string by = "depth-averaged release from the bin";
-  results.emplace_back("deposit_thickness_mid_ramp",
-                       length_estimate(run.probe_thickness, std::min(run.probe_thickness, *stop.low),
-                                       std::max(run.probe_thickness, *stop.high),
-                                       by + " (Savage-Hutter, Pouliquen friction, " +
-                                           format_quantity(d.cell_size, "mm", 2) + " cells)",
-                                       row.rung));
+  Estimate deposit = length_estimate(run.probe_thickness, run.probe_thickness, run.probe_thickness,
+                                     by + " (Savage-Hutter, Pouliquen friction, " +
+                                         format_quantity(d.cell_size, "mm", 2) + " cells)",
+                                     row.rung);
+  // Banded by the stopping thickness's band; below theta1 (no stopping thickness) unbanded.
+  const Estimate* stop = find_estimate(results, "stopping_thickness");
+  if (stop && stop->low && stop->high) {
+    deposit.low = std::min(run.probe_thickness, *stop->low);
+    deposit.high = std::max(run.probe_thickness, *stop->high);
+  } else {
+    deposit.low = deposit.high = std::nullopt;
+  }
+  results.emplace_back("deposit_thickness_mid_ramp", std::move(deposit));
   results.emplace_back("time_to_rest", unbanded(run.stop_time, "s", by, row.rung));
   const double released = run.initial_volume > 0 ? run.outflow_volume / run.initial_volume : 0.0;
   results.emplace_back("fraction_leaving_ramp", unbanded(released * 100, "%", by, row.rung));
@@ -211,12 +217,12 @@ void check_chute(const Case& c, const Chute& chute, const ModelChoices& models, 
   const StoppingThicknessModel& stop = models.of(stopping_thickness_models());
   std::vector<Finding> notes;
   stopping_results(chute, m, stop, record.results, notes);
-  std::optional<ChuteDeposit> deposit;
-  if (find_estimate(record.results, "stopping_thickness")) {
-    const ChuteDepositModel& row = models.of(chute_deposit_models());
-    deposit = row.evaluate(chute, pouliquen_law_of(*m.surface_flow));
-    if (deposit) deposit_results(*deposit, row, record.results);
-  }
+  // A release from the bin spreads and comes to rest whatever the angle: below theta1 too,
+  // where no layer flows steadily (the seed's plane is such a release).
+  const ChuteDepositModel& row = models.of(chute_deposit_models());
+  const std::optional<ChuteDeposit> deposit =
+      row.evaluate(chute, pouliquen_law_of(*m.surface_flow));
+  if (deposit) deposit_results(*deposit, row, record.results);
   VerdictBuilder verdict;
   show_in_target_units(c, record.results);
   for (auto& f : judge_chute(chute, c.design, record.results).findings) verdict.add(std::move(f));

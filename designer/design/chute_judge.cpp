@@ -42,11 +42,16 @@ void judge_deposit(const Chute& chute, const Estimates& es, VerdictBuilder& v) {
   const VerdictStatus status = edge_differs ? VerdictStatus::marginal : VerdictStatus::pass;
   if (!outcome)
     v.add(finding(std::nullopt, "deposit", "deposit: " + *label));
-  else if (*outcome == DepositOutcome::NeverFlowsBelowTheta1)
+  else if (*outcome == DepositOutcome::NeverFlowsBelowTheta1) {
+    // A release still spreads and stops: say what it leaves.
+    const Estimate* release = number_of(es, "deposit_thickness_mid_ramp");
     v.add(finding(edge_differs ? VerdictStatus::marginal : VerdictStatus::fail, "deposit",
-                  "the material never flows at " + angle_of(chute) + " (deposit: " + *label + ")" +
-                      edge));
-  else if (*outcome == DepositOutcome::NoDepositAboveTheta2)
+                  "the material does not flow steadily at " + angle_of(chute) +
+                      " (deposit: " + *label + ")" + edge +
+                      (release ? "; a release from the bin runs out and comes to rest, " +
+                                     shown(*release) + " thick at mid-ramp"
+                               : std::string())));
+  } else if (*outcome == DepositOutcome::NoDepositAboveTheta2)
     v.add(
         finding(status, "deposit",
                 "no deposit remains at " + angle_of(chute) + " (deposit: " + *label + ")" + edge));

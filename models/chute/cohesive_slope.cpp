@@ -45,7 +45,8 @@ StoppingThickness hybrid_stopping_thickness(const PouliquenLaw& law, double cohe
   const double t = std::tan(angle), t1 = std::tan(law.theta1);
   if (angle <= law.theta1)
     return {DepositOutcome::NeverFlowsBelowTheta1, std::numeric_limits<double>::infinity(),
-            "never flows: at or below theta1 a layer of any thickness stays where it is"};
+            "never flows: at or below theta1 no layer flows steadily: a flowing layer of any "
+            "thickness comes to rest"};
   const double numerator = law.length * (std::tan(law.theta2) - t) +
                            cohesion / (bulk_density * kGravity * std::cos(angle));
   if (numerator <= 0.0)

@@ -34,7 +34,7 @@ StoppingThickness outside_band(double angle, double theta1, double theta2) {
                 ") every layer keeps flowing and the ramp drains"};
   return {DepositOutcome::NeverFlowsBelowTheta1, std::numeric_limits<double>::infinity(),
           "never flows: at " + degrees(angle) + " (at or below theta1 = " + degrees(theta1) +
-              ") a layer of any thickness stays where it is"};
+              ") no layer flows steadily: a flowing layer of any thickness comes to rest"};
 }
 
 }  // namespace

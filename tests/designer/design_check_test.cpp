@@ -284,6 +284,29 @@ TEST(ChuteCheck, WhetherItFlowsNearTheta1IsMarginal) {
   EXPECT_EQ(at(theta1 - 1.5).verdict.status, VerdictStatus::fail);
 }
 
+// Below theta1 no layer flows steadily (FAIL), but a release from the bin still spreads and
+// comes to rest (rung L1): the deposit it leaves is reported, unbanded, and conserves the
+// release (nothing leaves the ramp). Shallower, it runs out less far: none reaches mid-ramp at
+// 5 deg below theta1 where 0.5 deg below some does.
+TEST(ChuteCheck, BelowTheta1AReleaseStillComesToRest) {
+  const double theta1 = in_degrees(
+      chute_material(load_case("cases/inclined_plane_29_5.toml").material).surface_flow->theta1);
+  const auto at = [&](double degrees) {
+    return check("cases/inclined_plane_29_5.toml",
+                 {{"chute.angle", std::to_string(degrees) + " deg"}});
+  };
+  const DesignRecord near = at(theta1 - 1.5);
+  EXPECT_EQ(near.verdict.status, VerdictStatus::fail) << record_reasons(near);
+  EXPECT_EQ(text(near, "deposit"), "never flows (below theta1)");
+  const Estimate& deposit = result(near, "deposit_thickness_mid_ramp");
+  EXPECT_EQ(deposit.rung, Rung::L1);
+  EXPECT_FALSE(deposit.low.has_value());
+  EXPECT_GT(value(near, "deposit_thickness_mid_ramp"), 0.0);
+  EXPECT_EQ(value(near, "fraction_leaving_ramp"), 0.0);
+  EXPECT_LT(value(at(theta1 - 5.0), "deposit_thickness_mid_ramp"),
+            value(near, "deposit_thickness_mid_ramp"));
+}
+
 // The allowed deposit is judged against the stopping-thickness band (at 37 deg 25.9 mm, band
 // 14.4-42 mm): above the band's top a pass, between the value and the top marginal, below a fail.
 TEST(ChuteCheck, StoppingThicknessTarget) {
