@@ -139,6 +139,7 @@ ArchingVerificationCost estimate_arching_verification(const Case& c, const Desig
   const DemRunEstimate in_band = estimate_dem_hopper_run(narrower, q * std::pow(middle / w, 1.5));
   ArchingVerificationCost cost;
   cost.seconds = at_outlet.seconds + (plan.runs - 1) * in_band.seconds;
+  cost.outlet_seconds = at_outlet.seconds;
   const double longest = at_outlet.longest_seconds + (plan.runs - 1) * in_band.longest_seconds;
   cost.text = "about " + format_duration(cost.seconds) +
               " by its estimate, each run emptying at the reduced rate, at most " +
@@ -174,6 +175,14 @@ ArchingVerification verify_arching(const std::string& case_file,
   };
   v.design_run = bench_run_folder(
       runs_folder, arching_run_question(case_file, sets, h.outlet_width), arching_run_point());
+  const bool design_kept = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
+                                        arching_run_point(), ".", v.design_run)
+                               .has_value();
+  if (!design_kept && plan.outlet_seconds > budget) {
+    v.status = "its run at the design outlet takes about " + format_duration(plan.outlet_seconds) +
+               " by its estimate, beyond the budget of " + format_duration(budget);
+    return v;
+  }
   v.at_design = judge_at(h.outlet_width);
   if (const auto run = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
                                     arching_run_point(), ".", v.design_run))

@@ -15,6 +15,7 @@
 #include "models/os/interrupt_request.hpp"
 #include "models/units/quantity_format.hpp"
 #include "models/units/quantity_parser.hpp"
+#include "reports/result_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -61,11 +62,32 @@ bool dem_verification(const VerificationRequest& args, const Case& c, const Hopp
   const double width_tolerance =
       parsed(args.width_tolerance, dim::length, "--width-tolerance", "1 mm");
   const double budget = parsed(args.budget, dim::time, "--budget", "10 min");
-  const ArchingVerificationPlan plan = plan_arching_verification(c, record, width_tolerance);
+  ArchingVerificationPlan plan = plan_arching_verification(c, record, width_tolerance);
+  std::optional<ArchingVerificationCost> cost;
+  try {
+    cost = estimate_arching_verification(c, record, plan);
+    plan.outlet_seconds = cost->outlet_seconds;
+  } catch (const InputError&) {  // the scene says why when the run is made
+  }
+  if (args.log)
+    *args.log << "verify: " << quantity_label(plan.quantity) << " on the particle rung ("
+              << plan.law << "): the design outlet " << format_quantity(h.outlet_width, "mm", 4)
+              << ", then outlets from " << format_quantity(plan.low, "mm", 4) << " to "
+              << format_quantity(plan.high, "mm", 4) << " to "
+              << format_quantity(plan.tolerance, "mm", 3) << " (" << plan.runs << " runs)"
+              << (cost ? ": " + cost->text : std::string()) << '\n';
   install_interrupt_handler();
-  const ArchingVerification v =
+  ArchingVerification v =
       verify_arching(args.case_file, args.sets, h, plan, budget, runs, args.log);
   if (v.status == "interrupted") return false;
+  if (!v.at_design && cost) {  // refused on the budget: the command that holds it
+    std::string again = this_check(args) + " --verify dem";
+    if (args.width_tolerance != VerificationRequest{}.width_tolerance)
+      again += " --width-tolerance " + shell_word(args.width_tolerance);
+    v.status += ": " + again + " --budget " + budget_holding(cost->outlet_seconds) +
+                " makes the design outlet's run, --budget " + budget_holding(cost->seconds) +
+                " the whole plan";
+  }
   apply_arching_verification(c, plan, v, record);
   if (v.at_design)
     record.simulation_runs.push_back(std::filesystem::absolute(v.design_run).string());

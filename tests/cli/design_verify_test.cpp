@@ -133,11 +133,24 @@ fs::path twin_folder() {
 }
 
 // The design outlet (60 mm, 10 sphere diameters) flows on the particle rung: "flowing" on rung
-// L3 with the reduced label beside it, judged pass; a budget of 1 s cannot hold the bisection's 6
-// more runs, which the verdict says with the time they would take, and nothing is half-verified.
+// L3 with the reduced label beside it, judged pass; a budget of 3 s holds the outlet's run (about
+// 2 s by its estimate) but not the bisection's 6 more runs, which the verdict says with the time
+// they would take, and nothing is half-verified. A budget of 1 s does not hold even the outlet's
+// run: none is made, and the verdict names the budgets that would hold it and the whole plan.
 TEST(DesignVerifyDem, DesignOutletObservedAndBisectionRefusedBeyondTheBudget) {
   const fs::path dir = twin_folder();
-  const auto j = design_json(dir, "--verify dem --width-tolerance 2mm --budget 1s", "twin.toml");
+  const auto refused =
+      design_json(dir, "--verify dem --width-tolerance 2mm --budget 1s", "twin.toml");
+  EXPECT_EQ(refused["results"]["arching"]["rung"], "L0");
+  EXPECT_TRUE(said(refused,
+                   "its run at the design outlet takes about 2 s by its estimate, beyond "
+                   "the budget of 1 s"))
+      << refused["verdict"]["reasons"];
+  EXPECT_TRUE(said(refused, "--budget 1min makes the design outlet's run"));
+  EXPECT_FALSE(fs::exists(dir / "out" / "dem_hopper_twin_verify"));
+  const auto j = design_json(dir, "--verify dem --width-tolerance 2mm --budget 3s", "twin.toml");
+  EXPECT_TRUE(
+      fs::exists(dir / "out" / "dem_hopper_twin_verify"));  // where the refused run would have gone
   EXPECT_EQ(j["results"]["arching"]["rung"], "L3");
   EXPECT_EQ(j["results"]["arching"]["value"], "flowing");
   EXPECT_EQ(j["results"]["arching_reduced_model"]["rung"], "L0");
