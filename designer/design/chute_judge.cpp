@@ -1,6 +1,7 @@
 // The chute's judge (judge.hpp): whether the material flows and what stays on the ramp, from the
 // estimates present.
 #include <limits>
+#include <optional>
 
 #include "designer/design/estimate_reading.hpp"
 #include "designer/design/judge.hpp"
@@ -13,18 +14,14 @@ namespace {
 
 std::string angle_of(const Chute& chute) { return format_quantity(chute.angle, "deg", 3); }
 
-// Whether a corner of the law's uncertainty disagrees with the nominal deposit: it never flows
-// while the nominal law leaves a layer, or the other way round.
-bool edge_is(const Estimates& es, DepositOutcome o) {
+// The outcome of a corner of the law's uncertainty that disagrees with the nominal deposit (it
+// never flows while the nominal law leaves a layer, or the other way round), when one does.
+std::optional<DepositOutcome> edge_of(const Estimates& es) {
   const auto edge = label_of(es, "deposit_within_uncertainty");
-  return edge && deposit_outcome_from_string(*edge) == o;
+  return edge ? deposit_outcome_from_string(*edge) : std::nullopt;
 }
 bool may_not_flow(const Estimates& es) {
-  return edge_is(es, DepositOutcome::NeverFlowsBelowTheta1);
-}
-bool may_flow(const Estimates& es) {
-  const auto edge = label_of(es, "deposit_within_uncertainty");
-  return edge && !edge_is(es, DepositOutcome::NeverFlowsBelowTheta1);
+  return edge_of(es) == DepositOutcome::NeverFlowsBelowTheta1;
 }
 
 // The reduced models' deposit label: does the material flow, and does a layer stay?
@@ -34,10 +31,10 @@ void judge_deposit(const Chute& chute, const Estimates& es, VerdictBuilder& v) {
   const Estimate* stop = number_of(es, "stopping_thickness");
   const auto outcome = deposit_outcome_from_string(*label);
   // Whether the material flows at all differs across the law's uncertainty: MARGINAL.
-  const bool edge_differs = may_not_flow(es) || may_flow(es);
+  const bool edge_differs = edge_of(es).has_value();
   const std::string edge = edge_differs
                                ? ", but within the law's uncertainty it " +
-                                     std::string(may_flow(es) ? "may flow" : "may never flow")
+                                     std::string(may_not_flow(es) ? "may never flow" : "may flow")
                                : std::string();
   const VerdictStatus status = edge_differs ? VerdictStatus::marginal : VerdictStatus::pass;
   if (!outcome)
