@@ -25,6 +25,7 @@ std::string standard_error(double error, const char* unit, double scale) {
 }  // namespace
 
 std::string chute_rung_text(const ChuteCalibrationOutcome& o) {
+  if (!o.rung.empty()) return o.rung;
   if (o.design.against == "dem")
     return "L3 DEM, the seed's law in periodic stopping layers (h_stop bisected to one sphere)";
   return "L2 CEL-FEM, cells from 20 mm to " + format_quantity(o.design.finest_cell, "mm", 3) +

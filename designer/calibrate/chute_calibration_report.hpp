@@ -23,6 +23,7 @@ struct ChuteCalibrationOutcome {
   StopLawFit fit;
   std::size_t runs_made = 0, runs_read_back = 0;
   std::set<std::string> run_commits;
+  std::string rung;  // the references' rung in words when read from verified designs (else empty)
 };
 
 // What the references were, in words: "L2 CEL-FEM, cells 20 and 10 mm (the levels that put 3

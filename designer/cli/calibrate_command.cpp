@@ -15,6 +15,7 @@
 #include "designer/calibrate/calibration_report.hpp"
 #include "designer/calibrate/chute_calibration_report.hpp"
 #include "designer/calibrate/drum_calibration_report.hpp"
+#include "designer/calibrate/stopping_records.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/case/material_library.hpp"
 #include "designer/case/material_text.hpp"
@@ -280,31 +281,67 @@ ChuteCalibrationDesign chute_design_of(const CalibrateArguments& args, const Cas
   return d;
 }
 
-// Pouliquen's h_stop law (theta2 and L; theta1 held) fitted to the rung's deposits over the
-// plane's inclination.
-int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case,
-                          std::chrono::steady_clock::time_point start) {
-  const Material material = calibrated_material(args);
-  if (!material.surface_flow)
-    throw InputError(material.origin, "material.surface_flow",
-                     "a chute calibration needs the material's [surface_flow] (theta1 is held)");
-  ChuteCalibrationOutcome o;
-  o.design = chute_design_of(args, plane_case, material);
-  o.material = material.name;
-  for (const auto& p : o.design.points)
-    o.points.push_back({chute_point_question(o.design, p), {}, "done"});
-  for (const auto& p : o.points) {  // every point's case, before any run
-    std::vector<SetOverride> overrides;
-    for (const auto& s : p.question.sets) overrides.push_back(parse_set_override(s));
-    (void)load_case(o.design.case_file, overrides);
+// The plane's inclinations from verified design records (--stopping): no runs are made here,
+// each bracket is a bisection of its own, made and kept by `design --verify dem`.
+void observe_stopping_records(const CalibrateArguments& args, const Material& material,
+                              ChuteCalibrationOutcome& o) {
+  if (args.against != "dem")
+    throw InputError("--against", args.against,
+                     "dem with --stopping (its records are h_stop brackets of `design --verify "
+                     "dem`; against cel the calibration runs the plane's CEL series itself)");
+  const std::vector<double> held_out = held_out_list(args, dim::angle);
+  std::vector<StoppingRecord> records;
+  for (const auto& file : args.stopping) {
+    StoppingRecord r = read_stopping_record(file, material.name);
+    for (double angle : held_out)
+      if (std::abs(angle - r.observation.angle) < 1e-6) r.observation.held_out = true;
+    for (const auto& other : records) {
+      if (std::abs(other.observation.angle - r.observation.angle) < 1e-9)
+        throw InputError(
+            file, "inputs.chute.angle",
+            "each inclination once: " + format_quantity(r.observation.angle, "deg", 4) +
+                " is also " + other.file.string() + "'s");
+      if (other.rung != r.rung)
+        throw InputError(file, "results.stopping_thickness.model",
+                         "expected the rung of the other records (" + other.rung + "), got " +
+                             r.rung);
+    }
+    records.push_back(std::move(r));
   }
-  if (args.list) {
-    list_runs(o.points);
-    return kExitOk;
+  for (double angle : held_out)
+    if (std::none_of(records.begin(), records.end(), [&](const StoppingRecord& r) {
+          return std::abs(angle - r.observation.angle) < 1e-6;
+        }))
+      throw InputError("--held-out", format_quantity(angle, "deg", 4),
+                       "the angle of one of the --stopping records");
+  if (std::count_if(records.begin(), records.end(),
+                    [](const StoppingRecord& r) { return !r.observation.held_out; }) < 2)
+    throw InputError("--stopping", std::to_string(records.size()) + " record(s)",
+                     "a chute calibration fits theta2 and L: records at two inclinations at "
+                     "least, not held out");
+  o.design.against = "dem";
+  o.rung = records.front().rung + ", read from verified designs";
+  for (const auto& r : records) {
+    o.design.points.push_back({r.observation.angle, r.observation.held_out});
+    CalibrationPoint point;
+    point.question.title = r.file.string();
+    point.reference.value = r.observation.reference;
+    point.reference.error_bar = r.observation.error_bar;
+    point.reference.unit = "m";
+    point.reference.source = "rests at " + format_quantity(r.stops_at, "mm", 4) + ", flows at " +
+                             format_quantity(r.flows_at, "mm", 4) + " (" + r.command + ")";
+    o.points.push_back(std::move(point));
+    o.observed.push_back(o.observations.size());
+    o.observations.push_back(r.observation);
+    o.run_commits.insert(r.commits.begin(), r.commits.end());
   }
-  const std::filesystem::path out = output_folder(args, material);
-  OutputFolder folder(out, "--out");
-  if (!run_points(args, out, o, keep_resolving_levels)) return kExitInterrupted;
+}
+
+// The plane's inclinations, each run on the rung (or read back from OUT/runs); false when Ctrl-C
+// stopped the runs.
+bool observe_plane_runs(const CalibrateArguments& args, const std::filesystem::path& out,
+                        ChuteCalibrationOutcome& o) {
+  if (!run_points(args, out, o, keep_resolving_levels)) return false;
   for (std::size_t i = 0; i < o.points.size(); ++i) {
     if (o.points[i].status != "done") continue;
     const BenchReference& r = o.points[i].reference;
@@ -316,12 +353,52 @@ int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case
   const auto fitted = std::count_if(o.observations.begin(), o.observations.end(),
                                     [](const StopObservation& x) { return !x.held_out; });
   require_two_fitted(fitted, "inclination(s) have a reference deposit", out);
+  return true;
+}
+
+// Pouliquen's h_stop law (theta2 and L; theta1 too from three inclinations) fitted to the rung's
+// deposits over the plane's inclination: its runs made here, or the brackets of verified designs.
+int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case,
+                          std::chrono::steady_clock::time_point start) {
+  const Material material = calibrated_material(args);
+  if (!material.surface_flow)
+    throw InputError(material.origin, "material.surface_flow",
+                     "a chute calibration needs the material's [surface_flow] (theta1 is held)");
+  ChuteCalibrationOutcome o;
+  o.material = material.name;
+  const bool from_records = !args.stopping.empty();
+  if (from_records) {
+    o.design.case_file = args.case_file;
+    observe_stopping_records(args, material, o);
+    if (args.list) {
+      for (const auto& p : o.points)
+        std::cout << p.question.title << ": " << p.reference.source << '\n';
+      return kExitOk;
+    }
+  } else {
+    o.design = chute_design_of(args, plane_case, material);
+    for (const auto& p : o.design.points)
+      o.points.push_back({chute_point_question(o.design, p), {}, "done"});
+    for (const auto& p : o.points) {  // every point's case, before any run
+      std::vector<SetOverride> overrides;
+      for (const auto& s : p.question.sets) overrides.push_back(parse_set_override(s));
+      (void)load_case(o.design.case_file, overrides);
+    }
+    if (args.list) {
+      list_runs(o.points);
+      return kExitOk;
+    }
+  }
+  const std::filesystem::path out = output_folder(args, material);
+  OutputFolder folder(out, "--out");
+  if (!from_records && !observe_plane_runs(args, out, o)) return kExitInterrupted;
   o.fit = fit_stop_law(o.observations, material);
   // A law that could not be fitted is not written: the material keeps what it had.
   if (!o.fit.failure.empty())
     throw NumericalFailure(
         "calibration: the stopping-thickness law could not be fitted (" + o.fit.failure +
-        "); the material file is left as it was; see the runs in " + (out / "runs").string());
+        "); the material file is left as it was" +
+        (from_records ? std::string() : "; see the runs in " + (out / "runs").string()));
   const ChuteCalibration table =
       chute_calibration_table(o, plane_case.name, commit_text(kCommit, o.run_commits), today());
   const auto target = material_target(args, material, out);
@@ -330,7 +407,10 @@ int run_chute_calibration(const CalibrateArguments& args, const Case& plane_case
                                      chute_calibration_toml(table, chute_point_records(o)),
                                      CalibrationPart::chute),
                     folder,
-                    chute_calibration_summary(o, table) + runs_text(o.runs_made, o.runs_read_back),
+                    chute_calibration_summary(o, table) +
+                        (from_records ? std::to_string(o.points.size()) +
+                                            " verified design(s) read, no run made\n"
+                                      : runs_text(o.runs_made, o.runs_read_back)),
                     start);
   return kExitOk;
 }
@@ -346,6 +426,9 @@ int run_calibrate(const CalibrateArguments& args) {
                        "a hopper case (--arching fits the hopper's arching models)");
     return run_arching_calibration(args, c, start);
   }
+  if (!args.stopping.empty() && !std::holds_alternative<Chute>(c.equipment))
+    throw InputError("--case", args.case_file,
+                     "an inclined-plane case (--stopping fits its stopping-thickness law)");
   if (std::holds_alternative<Drum>(c.equipment)) return run_drum_calibration(args, c, start);
   if (std::holds_alternative<Chute>(c.equipment)) return run_chute_calibration(args, c, start);
   if (!std::holds_alternative<Hopper>(c.equipment))
@@ -424,6 +507,13 @@ void add_calibrate_command(Command& program, int& exit_code) {
               "fit the arching models' strength (sigma_c scale) to the critical outlet widths of "
               "these verified designs (results.json of `design --verify dem --width-tolerance "
               "...`) instead of the discharge; --held-out then takes semi-angles")
+      .type_name("RESULTS...");
+  command
+      .option("--stopping", args->stopping,
+              "fit an inclined plane's stopping-thickness law to the h_stop brackets of these "
+              "verified designs (results.json of `design PLANE --set chute.angle=ANGLE --verify "
+              "dem`, one per angle) instead of running --angles; --held-out then picks among "
+              "their angles")
       .type_name("RESULTS...");
   command.flag("--list", args->list, "list the runs the calibration makes, then stop");
   command

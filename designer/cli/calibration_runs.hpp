@@ -45,6 +45,8 @@ struct CalibrateArguments {
   // Verified design records (results.json) whose critical outlet widths an arching calibration
   // fits.
   std::vector<std::string> arching;
+  // Verified chute design records (results.json) whose h_stop brackets a chute calibration fits.
+  std::vector<std::string> stopping;
   std::string write;
   bool list = false;
   CommandOptions options;

@@ -14,7 +14,6 @@
 namespace feedflow {
 namespace {
 
-constexpr double kDefaultSlab = 0.015;    // [m] the seed's slab, five diameters
 constexpr double kDefaultRunTime = 30.0;  // [s] after the release at most (seed: 18.8 s)
 constexpr double kChuteSampleInterval = 0.02;  // [s]
 
@@ -27,7 +26,7 @@ InclinedPlaneSpec plane_spec(const Case& c, const DemSettings& settings) {
   spec.bin_height = chute.bin_height;
   spec.fill_height = chute.fill_height;
   spec.gate_opening = chute.gate_opening;
-  spec.slab_depth = c.dem.slab_depth.value_or(kDefaultSlab);
+  if (c.dem.slab_depth) spec.slab_depth = *c.dem.slab_depth;  // else the seed's slab
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
   require_periodic_faces(c, "inclined-plane");
   require_slab_depth(c, settings, spec.slab_depth);

@@ -10,7 +10,6 @@
 namespace feedflow {
 namespace {
 
-constexpr double kDefaultSlab = 0.015;         // [m] the seed's slab, five diameters
 constexpr double kLayerSampleInterval = 0.02;  // [s]
 constexpr double kFirstJolt = 0.1;  // [s] after the tilt before a rest counts (run_layer's)
 constexpr std::size_t kAfterTiltColumn = 1, kSpeedColumn = 2;  // of columns()
@@ -21,7 +20,7 @@ StoppingLayerSpec stopping_layer_spec(const Case& c, const DemSettings& settings
   StoppingLayerSpec spec;
   spec.angle = chute.angle;
   spec.thickness = *c.dem.stopping_layer;
-  spec.slab_depth = c.dem.slab_depth.value_or(kDefaultSlab);
+  if (c.dem.slab_depth) spec.slab_depth = *c.dem.slab_depth;  // else the seed's slab
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
   require_periodic_faces(c, "stopping-layer");
   require_slab_depth(c, settings, spec.slab_depth);

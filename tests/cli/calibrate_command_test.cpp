@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <functional>
 
 #include <nlohmann/json.hpp>
@@ -313,6 +314,92 @@ TEST(CalibrateCommand, DepositsThatThickenWithTheSlopeAreNotWritten) {
   EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
   EXPECT_NE(r.err.find("do not thin"), std::string::npos) << r.err;
   EXPECT_EQ(slurp(dir / "cases" / "materials" / "loblolly_pine.toml"), before);
+  fs::remove_all(dir);
+}
+
+// A verified chute design's results.json as `design PLANE --set chute.angle=DEG --verify dem`
+// writes it (the keys a calibration reads), h_stop bracketed at `stops` .. `flows` [m].
+void write_verified_plane(const fs::path& file, double degrees, double stops, double flows,
+                          const std::string& kind = "chute") {
+  const nlohmann::json j = {
+      {"case", {{"name", "inclined_plane_29_5"}, {"kind", kind}}},
+      {"inputs", {{"chute", {{"angle", degrees * feedflow::kDegree}}}}},
+      {"input_display", {{"material.name", "loblolly_pine"}}},
+      {"results",
+       {{"stopping_thickness",
+         {{"value", 0.5 * (stops + flows)},
+          {"unit", "m"},
+          {"model", "DEM (hysteretic_nonlinear2) periodic layers at " + std::to_string(degrees) +
+                        " deg: rests at .., flows at .."},
+          {"rung", "L3"},
+          {"low", stops},
+          {"high", flows}}}}}};
+  std::ofstream(file) << j.dump(1);
+}
+
+// Pouliquen's h_stop with theta1 30 deg, theta2 48 deg and L 10 mm [m].
+double layer_threshold(double degrees) {
+  const double t = std::tan(degrees * feedflow::kDegree);
+  return 0.01 * (std::tan(48 * feedflow::kDegree) - t) / (t - std::tan(30 * feedflow::kDegree));
+}
+
+// Brackets of verified designs at four angles (three fitted, one held out), each 3 mm wide about
+// a known law: --stopping fits theta1, theta2 and L back from them with no run made, the held-out
+// angle is met, the material gains [calibration.chute] naming the particle rung, and `design` at
+// another angle uses it.
+TEST(CalibrateCommand, VerifiedStoppingThicknessesCalibrateTheChuteLaw) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_stopping", true);
+  std::string records;
+  for (double deg : {34.0, 37.0, 42.0, 39.5}) {
+    const fs::path file = dir / ("plane_" + std::to_string(static_cast<int>(deg * 10)) + ".json");
+    write_verified_plane(file, deg, layer_threshold(deg) - 1.5e-3, layer_threshold(deg) + 1.5e-3);
+    records += " " + file.filename().string();
+  }
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against dem --case cases/inclined_plane_29_5.toml --stopping" +
+          records + " --held-out 39.5deg --out c",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("4 verified design(s) read, no run made"), std::string::npos) << r.out;
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  const auto& law = json["stopping_thickness_law"];
+  EXPECT_TRUE(law["theta1_fitted"].get<bool>());
+  EXPECT_NEAR(feedflow::in_degrees(law["theta1_after"]["value"].get<double>()), 30.0, 1e-3);
+  EXPECT_NEAR(feedflow::in_degrees(law["theta2_after"]["value"].get<double>()), 48.0, 1e-3);
+  EXPECT_NEAR(law["stop_length_after"]["value"].get<double>(), 0.01, 1e-6);
+  EXPECT_LT(law["held_out_max_error_after"].get<double>(), 1e-5);
+  const std::string material = slurp(dir / "cases" / "materials" / "loblolly_pine.toml");
+  EXPECT_NE(material.find("[calibration.chute]"), std::string::npos);
+  EXPECT_NE(material.find("L3 DEM (hysteretic_nonlinear2) periodic layers"), std::string::npos);
+
+  const feedflow::testing::Run design =
+      run_feedflow("design cases/inclined_plane_29_5.toml --set chute.angle=35deg --json -", dir);
+  ASSERT_EQ(design.exit_code, 0) << design.err;
+  const auto designed = nlohmann::json::parse(design.out);
+  const auto& h = designed["results"]["stopping_thickness"];
+  EXPECT_NEAR(h["value"].get<double>(), layer_threshold(35), 1e-6);
+  EXPECT_NE(h["model"].get<std::string>().find("calibrated against L3 DEM"), std::string::npos);
+
+  // Refused, exit 2 and nothing written: a hopper's record, one angle twice, a held-out angle no
+  // record has, two fitted records short, the continuum rung.
+  write_verified_plane(dir / "hopper.json", 36, 0.02, 0.03, "hopper");
+  write_verified_plane(dir / "again.json", 34, 0.05, 0.06);
+  const std::pair<std::string, std::string> bad[] = {
+      {"--stopping plane_340.json plane_370.json hopper.json", "hopper.json"},
+      {"--stopping plane_340.json plane_370.json again.json", "again.json"},
+      {"--stopping plane_340.json plane_370.json --held-out 35deg", "--held-out"},
+      {"--stopping plane_340.json plane_370.json --held-out 37deg", "--stopping"},
+      {"--stopping plane_340.json plane_370.json --against cel", "--against"}};
+  for (const auto& [flags, named] : bad) {
+    const feedflow::testing::Run refused = run_feedflow(
+        std::string(
+            "calibrate loblolly_pine --case cases/inclined_plane_29_5.toml --out refused ") +
+            (flags.find("--against") == std::string::npos ? "--against dem " : "") + flags,
+        dir);
+    EXPECT_EQ(refused.exit_code, 2) << flags << ": " << refused.err;
+    EXPECT_NE(refused.err.find(named), std::string::npos) << flags << ": " << refused.err;
+    EXPECT_FALSE(fs::exists(dir / "refused")) << flags;
+  }
   fs::remove_all(dir);
 }
 

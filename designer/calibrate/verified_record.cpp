@@ -1,0 +1,80 @@
+#include "designer/calibrate/verified_record.hpp"
+
+#include <fstream>
+
+#include "models/core/errors.hpp"
+
+namespace feedflow {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string joined(const std::vector<std::string>& keys) {
+  std::string path;
+  for (const auto& k : keys) (path += path.empty() ? "" : ".") += k;
+  return path;
+}
+
+const Json& at(const Json& j, const std::string& file, const std::vector<std::string>& keys,
+               const std::string& expected) {
+  const Json* node = &j;
+  for (const auto& k : keys) {
+    if (!node->is_object() || !node->contains(k) || (*node)[k].is_null())
+      throw InputError(file, joined(keys), "expected " + expected);
+    node = &(*node)[k];
+  }
+  return *node;
+}
+
+}  // namespace
+
+VerifiedRecord VerifiedRecord::read(const std::filesystem::path& file, const std::string& option) {
+  std::ifstream in(file);
+  if (!in)
+    throw InputError(file.string(), option, "cannot read it: expected a design's results.json");
+  VerifiedRecord r;
+  r.file = file;
+  try {
+    r.json = Json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(file.string(), option,
+                     std::string("expected a design's results.json: ") + e.what());
+  }
+  return r;
+}
+
+double VerifiedRecord::number(const std::vector<std::string>& keys,
+                              const std::string& expected) const {
+  const Json& v = at(json, file.string(), keys, expected);
+  if (!v.is_number()) throw InputError(file.string(), joined(keys), "expected " + expected);
+  return v.get<double>();
+}
+
+std::string VerifiedRecord::text(const std::vector<std::string>& keys,
+                                 const std::string& expected) const {
+  const Json& v = at(json, file.string(), keys, expected);
+  if (!v.is_string()) throw InputError(file.string(), joined(keys), "expected " + expected);
+  return v.get<std::string>();
+}
+
+std::set<std::string> VerifiedRecord::run_commits() const {
+  std::set<std::filesystem::path> folders;
+  if (json.contains("provenance") && json["provenance"].contains("simulation_runs"))
+    for (const auto& run : json["provenance"]["simulation_runs"])
+      if (run.is_string())
+        folders.insert((file.parent_path() / run.get<std::string>()).parent_path());
+  std::set<std::string> commits;
+  for (const auto& folder : folders) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+      std::ifstream run_json(entry.path() / "run.json");
+      if (!run_json) continue;
+      const Json saved = Json::parse(run_json, nullptr, false);
+      if (saved.is_object() && saved.contains("commit") && saved["commit"].is_string())
+        commits.insert(saved["commit"].get<std::string>());
+    }
+  }
+  return commits;
+}
+
+}  // namespace feedflow

@@ -1,0 +1,30 @@
+#pragma once
+// A verified design's record (results.json of `feedflow design --verify ...`, or of a sweep point)
+// as a calibration reads it: its fields by path, each missing or mistyped one an InputError naming
+// the file and the path, and the commits of the programs that made its verification's runs.
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace feedflow {
+
+struct VerifiedRecord {
+  std::filesystem::path file;
+  nlohmann::ordered_json json;
+
+  // Reads and parses `file`; `option` names the flag that gave it (InputError otherwise).
+  static VerifiedRecord read(const std::filesystem::path& file, const std::string& option);
+
+  // The value at `keys` (a key may hold a dot: "material.name"); `expected` says what it should be.
+  double number(const std::vector<std::string>& keys, const std::string& expected) const;
+  std::string text(const std::vector<std::string>& keys, const std::string& expected) const;
+
+  // The commits (read from each run.json) of the runs its provenance names, and of the runs beside
+  // them (a bisection's runs share its verification folder).
+  std::set<std::string> run_commits() const;
+};
+
+}  // namespace feedflow
