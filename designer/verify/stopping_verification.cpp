@@ -162,16 +162,16 @@ StoppingVerification verify_stopping(const std::string& case_file,
     return saved ? flows_in(*saved) : std::nullopt;
   };
   double low = plan.low, high = plan.high;
-  ThresholdBisection kept =
-      bisect_flow_threshold(low, high, plan.tolerance, kept_answer, plan.floor, plan.ceiling);
+  ThresholdBisection kept = bisect_flow_threshold(low, high, plan.tolerance, kept_answer,
+                                                  plan.floor, plan.ceiling, kLayerGrid);
   if (kept.end == ThresholdBisection::End::stopped) {
     std::tie(low, high) = search_band(plan, kept_layers(runs_folder, folder_of, kept_answer));
     if (low != plan.low || high != plan.high) {
       if (progress)
         *progress << "verify: layers kept from an earlier search narrow it to " << mm(low) << " .. "
                   << mm(high) << "\n";
-      kept =
-          bisect_flow_threshold(low, high, plan.tolerance, kept_answer, plan.floor, plan.ceiling);
+      kept = bisect_flow_threshold(low, high, plan.tolerance, kept_answer, plan.floor, plan.ceiling,
+                                   kLayerGrid);
     }
   }
   if (kept.end == ThresholdBisection::End::stopped) {
@@ -208,8 +208,8 @@ StoppingVerification verify_stopping(const std::string& case_file,
     }
     return flows;
   };
-  v.bisection =
-      bisect_flow_threshold(low, high, plan.tolerance, judge_at, plan.floor, plan.ceiling);
+  v.bisection = bisect_flow_threshold(low, high, plan.tolerance, judge_at, plan.floor, plan.ceiling,
+                                      kLayerGrid);
   return v;
 }
 

@@ -23,6 +23,10 @@ namespace feedflow {
 
 // The thickest layer the search may try, in sphere diameters.
 constexpr double kLayerCeilingDiameters = 40.0;
+// [m] every layer's thickness lies on this grid, so the search asks the same layers when it
+// starts again from the thicknesses its folders are named by (a layer cut short is continued,
+// not made afresh under a name a digit apart).
+constexpr double kLayerGrid = 1e-6;
 
 // The DEM layer the verification runs at `thickness` [m] as a bench question and point, so a
 // second call reads it back: the case as typed with its `sets` and the thickness.

@@ -36,12 +36,16 @@ struct ThresholdBisection {
 };
 
 // `flows` answers for a size, or nothing when its run gave no answer (the bisection stops).
-// `floor` and `ceiling` [m]: how far the band may widen (0: not beyond its edge). Throws
-// std::invalid_argument unless 0 < low < high, tolerance > 0, floor <= low and ceiling >= high
-// (each when given).
+// `floor` and `ceiling` [m]: how far the band may widen (0: not beyond its edge). `grid` [m]
+// (0: none): every middle and widened edge is taken to it (the band's edges are asked as given),
+// so a search started again from the sizes its runs are named by asks the sizes the first one
+// asked, not ones a last digit apart. Throws std::invalid_argument unless 0 < low < high, tolerance
+// > 0, floor
+// <= low and ceiling >= high (each when given), and grid < tolerance.
 ThresholdBisection bisect_flow_threshold(double low, double high, double tolerance,
                                          const std::function<std::optional<bool>(double)>& flows,
-                                         double floor = 0.0, double ceiling = 0.0);
+                                         double floor = 0.0, double ceiling = 0.0,
+                                         double grid = 0.0);
 
 // The number of judged sizes a bisection of [low, high] to `tolerance` takes when it brackets.
 int bisection_runs(double low, double high, double tolerance);

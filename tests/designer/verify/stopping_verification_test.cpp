@@ -84,7 +84,7 @@ TEST(StoppingVerification, KeptLayersBracketHStopWithoutADemStep) {
         testing::lay_down_layer(file, {}, runs, h, flows ? "flowing" : "at rest", 0.9 * h, 30.0);
         return flows;
       },
-      plan.floor, plan.ceiling);
+      plan.floor, plan.ceiling, kLayerGrid);
   const StoppingVerification v = verify_stopping(file, {}, plan, 0.0, runs, nullptr);
   EXPECT_EQ(v.status, "done");
   EXPECT_EQ(v.wall_seconds, 0.0);  // all read back

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
 
 #include "designer/verify/threshold_bisection.hpp"
 
@@ -63,6 +66,42 @@ TEST(ThresholdBisection, TheCeilingAndTheFloorEndTheWidening) {
   EXPECT_EQ(calls, 1);
   EXPECT_THROW(bisect_flow_threshold(0.010, 0.020, 0.002, flows_from(0.5, calls), 0.011, 0.120),
                std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace feedflow
+
+namespace feedflow {
+namespace {
+
+// The sizes a search asks for, as its runs' folders name them (mm to six decimals).
+std::vector<std::string> names_asked(double low, double high, double grid) {
+  std::vector<std::string> names;
+  (void)bisect_flow_threshold(
+      low, high, 0.003,
+      [&](double h) -> std::optional<bool> {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6f", h / 1e-3);
+        names.push_back(text);
+        return h >= 0.009;
+      },
+      0.003, 0.120, grid);
+  return names;
+}
+
+// A search started again from its band's edges as its runs are named (the 42 deg layers' band,
+// 3.3759094 .. 12.9868704 mm) asks the layers the first search asked, to the micrometre; without
+// the grid the second search's middle differs in the last digit (8.181389 against 8.181390 mm),
+// so a layer cut short would be started afresh under another name instead of continued.
+TEST(ThresholdBisection, OnAGridASearchStartedAgainAsksTheSameSizes) {
+  const double low = 3.3759094e-3, high = 12.9868704e-3;
+  // as their folders say, read back as the search reads them
+  const double named_low = std::stod("3.375909") * 1e-3, named_high = std::stod("12.98687") * 1e-3;
+  const auto first = names_asked(low, high, 1e-6), again = names_asked(named_low, named_high, 1e-6);
+  EXPECT_EQ(first, again);
+  for (std::size_t k = 2; k < first.size(); ++k)  // every middle on the micrometre grid
+    EXPECT_EQ(first[k].substr(first[k].size() - 3), "000") << first[k];
+  EXPECT_NE(names_asked(low, high, 0.0), names_asked(named_low, named_high, 0.0));
 }
 
 }  // namespace
