@@ -35,7 +35,12 @@ MeshWall::MeshWall(std::string name, TriangleMesh mesh) : name_(std::move(name))
       const auto [it, added] = edges.emplace(key, static_cast<std::uint32_t>(edges.size()));
       edge_id_[t][k] = it->second;
     }
-    extent_sum += (a.cwiseMax(b).cwiseMax(c) - a.cwiseMin(b).cwiseMin(c)).maxCoeff();
+    // The triangle's middle extent over the axes: a long strip (a saw-tooth ramp's face across
+    // a slab, 45 mm by 2 mm) counts by its width, so its cells stay about a tooth wide instead
+    // of a slab, where each query would read every tooth.
+    Vec3 e = a.cwiseMax(b).cwiseMax(c) - a.cwiseMin(b).cwiseMin(c);
+    std::sort(e.data(), e.data() + 3);
+    extent_sum += e[1];
   }
   // Cells about the mean triangle size, at most 256 along the longest side and 4 M in all.
   const Vec3 extent = upper - lower;

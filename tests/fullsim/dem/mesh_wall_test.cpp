@@ -1,6 +1,7 @@
 // Triangle-mesh walls: the STL reader and sphere-mesh contact against the analytic walls.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -11,10 +12,11 @@
 
 #include <unistd.h>
 
-#include "tests/fullsim/dem/dem_test_scene.hpp"
 #include "fullsim/dem/mesh_wall.hpp"
+#include "fullsim/dem/scene/sawtooth_ramp.hpp"
 #include "fullsim/dem/stl_file.hpp"
 #include "models/core/errors.hpp"
+#include "tests/fullsim/dem/dem_test_scene.hpp"
 
 namespace feedflow {
 namespace {
@@ -258,6 +260,62 @@ TEST(MeshWall, SphereInAVGrooveTouchesBothFaces) {
   EXPECT_NEAR(x.y(), 0.0, 1e-8);
   EXPECT_NEAR(x.z(), z, 1e-3 * delta);
   EXPECT_LT(e.max_speed(), 1e-6);
+}
+
+}  // namespace
+}  // namespace feedflow
+
+namespace feedflow {
+namespace {
+
+// [m] distance from (x, z) to the saw-tooth profile of period 2R and height R (45 deg faces from
+// the troughs at x = from + 2kR to the crests at from + (2k+1)R), the strips' cross-section.
+double sawtooth_distance(double x, double z, double from, double radius, long teeth) {
+  double best = 1e9;
+  for (long k = 0; k < teeth; ++k)
+    for (int face = 0; face < 2; ++face) {
+      const double x0 = from + (2 * k + face) * radius, z0 = face == 0 ? 0.0 : radius;
+      const double x1 = x0 + radius, z1 = face == 0 ? radius : 0.0;
+      const double dx = x1 - x0, dz = z1 - z0;
+      const double s = std::clamp(((x - x0) * dx + (z - z0) * dz) / (dx * dx + dz * dz), 0.0, 1.0);
+      best = std::min(best, std::hypot(x - x0 - s * dx, z - z0 - s * dz));
+    }
+  return best;
+}
+
+// The seed's ramp under a 15 mm slab (its strips 45 mm across, 2.1 mm wide) is binned by the
+// strips' width, not their length: a query reads a few teeth, not all of them (the grid was 2 x 2
+// x 1 cells of 45 mm, each sphere near the ramp testing half of its 96 triangles, a third of a
+// stopping layer's step). Binned so, the nearest contact of spheres anywhere over the ramp is
+// still the profile's own distance.
+TEST(MeshWall, ASawToothRampIsBinnedByItsTeethAndFindsTheNearestFace) {
+  const double r = 1.5e-3, from = -6e-3, to = 60e-3, depth = 15e-3;
+  const MeshWall ramp("ramp", sawtooth_ramp(from, to, r, depth));
+  const std::string grid = ramp.describe();
+  const auto at = grid.find(" of ");
+  ASSERT_NE(at, std::string::npos) << grid;
+  EXPECT_LE(std::stod(grid.substr(at + 4)), 2.0 * r) << grid;  // cells at most a tooth wide
+  const long teeth = static_cast<long>(std::ceil((to - from) / (2.0 * r) - 1e-9));
+  std::uint32_t state = 12345u;
+  const auto uniform = [&state](double lo, double hi) {
+    state = state * 1664525u + 1013904223u;
+    return lo + (hi - lo) * (static_cast<double>(state >> 8) / 16777216.0);
+  };
+  int touching = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const Vec3 x(uniform(0.0, 54e-3), uniform(0.0, depth), uniform(0.2e-3, 3.2e-3));
+    std::array<MeshTouch, MeshWall::kMaxContacts> touch;
+    const int count = ramp.touches(x, r, touch);
+    const double d = sawtooth_distance(x.x(), x.z(), from, r, teeth);
+    if (d < r) {
+      ASSERT_GT(count, 0) << x.transpose();
+      EXPECT_NEAR(touch[0].gap, d, 1e-12) << x.transpose();
+      ++touching;
+    } else {
+      EXPECT_EQ(count, 0) << x.transpose();
+    }
+  }
+  EXPECT_GT(touching, 500);  // the sample reaches the teeth
 }
 
 }  // namespace
