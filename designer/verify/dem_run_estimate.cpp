@@ -18,9 +18,10 @@ std::string DemRunEstimate::text() const {
   return "about " + format_duration(seconds) +
          (longest_seconds > 1.01 * seconds ? " (at most " + format_duration(longest_seconds) + ")"
                                            : std::string()) +
-         " on " + std::to_string(kDemHopperCores) + " cores: " + format_number(spheres, 3) +
-         " spheres, " + format_number((fill_time + discharge_time) / time_step / 1e6, 2) +
-         " million steps of " + format_quantity(time_step, "us", 3);
+         " on " + std::to_string(cores) + (cores == 1 ? " core: " : " cores: ") +
+         format_number(spheres, 3) + " spheres, " +
+         format_number((fill_time + discharge_time) / time_step / 1e6, 2) + " million steps of " +
+         format_quantity(time_step, "us", 3);
 }
 
 namespace {
@@ -35,6 +36,11 @@ double stable_step(DemEngine& engine, const RainFillSettings& rain, double radiu
   return engine.time_step();
 }
 
+// The threads a run of `spheres` takes: one below the engine's parallel_from.
+int threads_for(double spheres) {
+  return spheres < static_cast<double>(DemSettings{}.parallel_from) ? 1 : kDemHopperCores;
+}
+
 double sphere_mass(double radius, double density) {
   return density * 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 }
@@ -47,6 +53,7 @@ DemRunEstimate whole_bed_estimate(DemEngine& engine, const RainFillSettings& rai
   DemRunEstimate e;
   e.time_step = stable_step(engine, rain, rain.radius, rain.density);
   e.spheres = std::floor(rain.target_mass / sphere_mass(rain.radius, rain.density));
+  e.cores = threads_for(e.spheres);
   const double inserting = rain.target_mass / rain.mass_rate;
   e.fill_time = inserting + rain.settle_time_cap + launch;
   e.discharge_time = run;
@@ -86,6 +93,7 @@ DemRunEstimate estimate_dem_hopper_run(const Case& c, double reduced_rate) {
   DemRunEstimate e;
   e.time_step = stable_step(probe, rain, scene.radius(), scene.density);
   e.spheres = std::floor(rain.target_mass / sphere_mass(scene.radius(), scene.density));
+  e.cores = threads_for(e.spheres);
   const double inserting = rain.target_mass / rain.mass_rate;
   e.fill_time = inserting + rain.settle_time_cap;
   const double real_content = rain.target_mass * scene.scale();

@@ -18,6 +18,9 @@ namespace feedflow {
 // (hysteretic_nonlinear2 + k_nc, 7768 spheres, 0.35 m fill) kept from its fill to its emptying, on
 // the two threads of the bench machine, 2026-12-06: 3534 s at 6.38e6 and 1185 s at 7.71e6 (its
 // performance blocks).
+// A scene below DemSettings::parallel_from spheres runs on one thread whatever OMP_NUM_THREADS
+// says, at about that rate too (stopping layers of 1 300-1 900 spheres on one thread,
+// 2026-12-07: 6.3-7.3e6 at 14-42 mm).
 constexpr double kDemHopperParticleStepsPerSecond = 6.7e6;
 constexpr int kDemHopperCores = 2;
 
@@ -33,6 +36,7 @@ struct DemRunEstimate {
   // k_nc run at 31.3 mm did).
   double longest_seconds = 0.0;
   double run_cap = 0.0;
+  int cores = kDemHopperCores;  // the run's threads: one below DemSettings::parallel_from spheres
 
   // "about 1 h 05 min (at most 6 h 10 min) on 2 cores: 9723 spheres, 4.8 million steps of
   // 0.745 us"

@@ -7,6 +7,7 @@
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/dem_run_estimate.hpp"
+#include "fullsim/dem/dem_engine.hpp"
 
 namespace feedflow {
 namespace {
@@ -67,6 +68,21 @@ TEST(DemRunEstimate, ADrumTurnsAllItsSpheresForItsRotation) {
   EXPECT_DOUBLE_EQ(ten.seconds, ten.longest_seconds);
   EXPECT_NEAR(twenty.particle_steps - ten.particle_steps, ten.spheres * 10.0 / ten.time_step,
               1e-9 * twenty.particle_steps);
+}
+
+// A stopping layer of the seed's spheres holds fewer than the engine's parallel_from (4 000): it
+// runs on one thread whatever OMP_NUM_THREADS says, and its estimate says one core; the pilot
+// hopper's 9 723 run on two.
+TEST(DemRunEstimate, ALayerBelowTheEnginesParallelSizeRunsOnOneCore) {
+  const Case layer =
+      load_case("cases/inclined_plane_29_5.toml",
+                std::vector<SetOverride>{{"chute.angle", "37deg"}, {"dem.stopping_layer", "42mm"}});
+  const DemRunEstimate e = estimate_dem_layer_run(layer);
+  EXPECT_LT(e.spheres, static_cast<double>(DemSettings{}.parallel_from));
+  EXPECT_EQ(e.cores, 1);
+  EXPECT_NE(e.text().find(" on 1 core: "), std::string::npos) << e.text();
+  const Case c = pilot_at_45mm();
+  EXPECT_EQ(estimate_dem_hopper_run(c, reduced_rate(c)).cores, 2);
 }
 
 }  // namespace
