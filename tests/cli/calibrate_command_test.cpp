@@ -403,6 +403,33 @@ TEST(CalibrateCommand, VerifiedStoppingThicknessesCalibrateTheChuteLaw) {
   fs::remove_all(dir);
 }
 
+// The particle rung's own brackets (tests/data/verified_hstop: the seed's law in stopping layers
+// at 37 and 42 deg, rests at 26.5 / 8.18 mm, flows at 28.2 / 10.6 mm) calibrate the law with
+// theta1 held: two points fix theta2 and L, so the law meets both brackets' middles, and theta2
+// lies between the steeper angle and 90 deg (h_stop vanishes only beyond 42 deg).
+TEST(CalibrateCommand, TheParticleRungsBracketsCalibrateTheChuteLaw) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_stopping", true);
+  const fs::path data = fs::path(FEEDFLOW_TEST_DATA_DIR) / "verified_hstop";
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against dem --case cases/inclined_plane_29_5.toml --stopping " +
+          (data / "plane_37deg.json").string() + " " + (data / "plane_42deg.json").string() +
+          " --out c",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  const auto& check = json["design_check"];
+  const double middles[] = {0.5 * (0.026518 + 0.028244002), 0.5 * (0.008181389 + 0.01058413)};
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_NEAR(check["stopping_thickness_after"]["value"][k].get<double>(), middles[k], 1e-6) << k;
+    EXPECT_TRUE(check["band_holds_reference_after"][k].get<bool>()) << k;
+  }
+  const double theta2 =
+      feedflow::in_degrees(json["stopping_thickness_law"]["theta2_after"]["value"].get<double>());
+  EXPECT_GT(theta2, 42.0);
+  EXPECT_LT(theta2, 90.0);
+  fs::remove_all(dir);
+}
+
 // Bad input is exit 2 naming the flag, before any run: a list without a unit, too coarse a CEL
 // level, levels that do not double, a held-out point without '@', one fitted point.
 TEST(CalibrateCommand, BadInputIsRefusedByFlag) {
