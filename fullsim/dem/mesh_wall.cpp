@@ -17,6 +17,8 @@ MeshWall::MeshWall(std::string name, TriangleMesh mesh) : name_(std::move(name))
   if (mesh_.triangles.empty()) throw InputError(mesh_.source, "wall." + name_, "mesh has no triangles");
   const std::size_t nt = mesh_.triangles.size();
   face_normal_.resize(nt);
+  box_lower_.resize(nt);
+  box_upper_.resize(nt);
   edge_id_.resize(nt);
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edges;
   Vec3 lower = mesh_.vertices[0], upper = lower;
@@ -29,6 +31,8 @@ MeshWall::MeshWall(std::string name, TriangleMesh mesh) : name_(std::move(name))
     const auto& tri = mesh_.triangles[t];
     const Vec3 &a = mesh_.vertices[tri[0]], &b = mesh_.vertices[tri[1]], &c = mesh_.vertices[tri[2]];
     face_normal_[t] = (b - a).cross(c - a).normalized();
+    box_lower_[t] = a.cwiseMin(b).cwiseMin(c);
+    box_upper_[t] = a.cwiseMax(b).cwiseMax(c);
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = tri[k], j = tri[(k + 1) % 3];
       const auto key = std::minmax(i, j);
@@ -175,6 +179,9 @@ int MeshWall::touches(const Vec3& x_world, double r, std::array<MeshTouch, kMaxC
           const auto &tl = cell_lo_[t];
           if (i != std::max(tl[0], lo[0]) || j != std::max(tl[1], lo[1]) || k != std::max(tl[2], lo[2]))
             continue;
+          // Out of reach of the triangle's box, out of reach of the triangle: no contact.
+          const Vec3 out = (box_lower_[t] - x).cwiseMax(x - box_upper_[t]).cwiseMax(0.0);
+          if (out.squaredNorm() >= r * r) continue;
           Candidate c;
           bool hit = false;
           candidate(t, x, r, c, hit);

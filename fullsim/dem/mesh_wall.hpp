@@ -68,6 +68,7 @@ class MeshWall {
   std::string name_;
   TriangleMesh mesh_;                                   // body frame
   std::vector<Vec3> face_normal_;                       // per triangle, unit
+  std::vector<Vec3> box_lower_, box_upper_;             // per triangle, its bounding box
   std::vector<std::array<std::uint32_t, 3>> edge_id_;   // per triangle: ab, bc, ca
   // Uniform grid over the body-frame bounding box; triangle t sits in the cells
   // [cell_lo_[t], cell_hi_[t]] (its own bounding box).
