@@ -7,14 +7,8 @@ namespace feedflow {
 
 ArchingRecord read_arching_record(const std::filesystem::path& path, const std::string& against,
                                   const std::string& material, const Hopper& hopper) {
-  const VerifiedRecord j = VerifiedRecord::read(path, "--arching");
+  const VerifiedRecord j = VerifiedRecord::read(path, "--arching", "hopper", material);
   const std::string file = path.string();
-  if (j.text({"case", "kind"}, "a hopper design") != "hopper")
-    throw InputError(file, "case.kind", "expected a hopper design");
-  const std::string made_of = j.text({"input_display", "material.name"}, "the material's name");
-  if (made_of != material)
-    throw InputError(file, "input_display.material.name",
-                     "expected the calibrated material " + material + ", got " + made_of);
   const std::string shape = j.text({"inputs", "hopper", "shape"}, "wedge or conical");
   if (shape != hopper.shape)
     throw InputError(file, "inputs.hopper.shape",

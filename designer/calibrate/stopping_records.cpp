@@ -7,14 +7,8 @@ namespace feedflow {
 
 StoppingRecord read_stopping_record(const std::filesystem::path& path,
                                     const std::string& material) {
-  const VerifiedRecord j = VerifiedRecord::read(path, "--stopping");
+  const VerifiedRecord j = VerifiedRecord::read(path, "--stopping", "chute", material);
   const std::string file = path.string();
-  if (j.text({"case", "kind"}, "a chute design") != "chute")
-    throw InputError(file, "case.kind", "expected a chute design (an inclined plane)");
-  const std::string made_of = j.text({"input_display", "material.name"}, "the material's name");
-  if (made_of != material)
-    throw InputError(file, "input_display.material.name",
-                     "expected the calibrated material " + material + ", got " + made_of);
   const std::string key = "results.stopping_thickness";
   const std::string rung = j.text({"results", "stopping_thickness", "rung"},
                                   "the rung that verified the stopping thickness");

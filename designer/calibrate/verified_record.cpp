@@ -28,7 +28,8 @@ const Json& at(const Json& j, const std::string& file, const std::vector<std::st
 
 }  // namespace
 
-VerifiedRecord VerifiedRecord::read(const std::filesystem::path& file, const std::string& option) {
+VerifiedRecord VerifiedRecord::read(const std::filesystem::path& file, const std::string& option,
+                                    const std::string& kind, const std::string& material) {
   std::ifstream in(file);
   if (!in)
     throw InputError(file.string(), option, "cannot read it: expected a design's results.json");
@@ -40,6 +41,12 @@ VerifiedRecord VerifiedRecord::read(const std::filesystem::path& file, const std
     throw InputError(file.string(), option,
                      std::string("expected a design's results.json: ") + e.what());
   }
+  if (r.text({"case", "kind"}, "a " + kind + " design") != kind)
+    throw InputError(file.string(), "case.kind", "expected a " + kind + " design");
+  const std::string made_of = r.text({"input_display", "material.name"}, "the material's name");
+  if (made_of != material)
+    throw InputError(file.string(), "input_display.material.name",
+                     "expected the calibrated material " + material + ", got " + made_of);
   return r;
 }
 

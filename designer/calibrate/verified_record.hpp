@@ -15,8 +15,10 @@ struct VerifiedRecord {
   std::filesystem::path file;
   nlohmann::ordered_json json;
 
-  // Reads and parses `file`; `option` names the flag that gave it (InputError otherwise).
-  static VerifiedRecord read(const std::filesystem::path& file, const std::string& option);
+  // Reads and parses `file` (`option` names the flag that gave it), a design of equipment `kind`
+  // ("hopper", "chute") made of `material` (its name); InputError otherwise.
+  static VerifiedRecord read(const std::filesystem::path& file, const std::string& option,
+                             const std::string& kind, const std::string& material);
 
   // The value at `keys` (a key may hold a dot: "material.name"); `expected` says what it should be.
   double number(const std::vector<std::string>& keys, const std::string& expected) const;
