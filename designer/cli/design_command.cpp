@@ -38,6 +38,7 @@ struct DesignArguments {
   std::string tolerance = "10%";
   std::string width_tolerance = "1 mm";
   std::string thickness_tolerance;
+  std::string start_from;  // an earlier record of the chute's --verify dem
 };
 
 int run_design(const DesignArguments& args) {
@@ -64,6 +65,7 @@ int run_design(const DesignArguments& args) {
                              args.tolerance,
                              args.width_tolerance,
                              args.thickness_tolerance,
+                             args.start_from,
                              verify_runs,
                              args.options.human_output() ? &std::cout : nullptr};
   if (!verify_design(verify, c, record)) {
@@ -139,6 +141,12 @@ void add_design_command(Command& program, int& exit_code) {
               "--verify dem on a chute: width of the bracket the bisection on the stopping "
               "layer's thickness stops at (default one DEM sphere diameter)")
       .type_name("THICKNESS");
+  command
+      .option("--start-from", args->start_from,
+              "--verify dem on a chute: an earlier design's results.json at the same angle (its "
+              "search finished or cut short, on this machine or another): the layers of its "
+              "bracket are not made again, the bisection goes on inside it")
+      .type_name("RESULTS.json");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {
     model_help += "\n  " + std::string(o.key) + "=";

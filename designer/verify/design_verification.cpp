@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "designer/bench/bench_plan.hpp"
+#include "designer/calibrate/stopping_records.hpp"
 #include "designer/simulate/solver_choice.hpp"
 #include "designer/verify/arching_verification.hpp"
 #include "designer/verify/cel_chute_estimate.hpp"
@@ -45,6 +46,7 @@ std::string shell_word(const std::string& a) {
 std::string this_check(const VerificationRequest& args) {
   std::string again = "feedflow design " + shell_word(args.case_file);
   for (const auto& set : args.sets) again += " --set " + shell_word(set);
+  if (!args.start_from.empty()) again += " --start-from " + shell_word(args.start_from.string());
   return again;
 }
 
@@ -94,6 +96,24 @@ bool dem_verification(const VerificationRequest& args, const Case& c, const Hopp
   return true;
 }
 
+// The bracket of an earlier record of the chute's --verify dem (--start-from), its layer at rest
+// and its layer flowing; none without one. InputError (naming the file and the key) when it is no
+// such record or another angle's, material's or law's.
+EarlierLayers earlier_layers(const std::filesystem::path& file, const Case& c,
+                             const StoppingVerificationPlan& plan) {
+  if (file.empty()) return {};
+  const StoppingRecord r = read_stopping_record(file, c.material.name, "--start-from");
+  const double angle = std::get<Chute>(c.equipment).angle;
+  if (std::abs(r.observation.angle - angle) > 1e-9)
+    throw InputError(file.string(), "inputs.chute.angle",
+                     "expected the chute's angle " + format_quantity(angle, "deg", 4) + ", got " +
+                         format_quantity(r.observation.angle, "deg", 4));
+  if (r.law != plan.law)
+    throw InputError(file.string(), "results.stopping_thickness.model",
+                     "expected layers of the " + plan.law + " law, got " + r.law);
+  return {{r.stops_at, false}, {r.flows_at, true}};
+}
+
 // --verify dem on a chute: h_stop at its angle bracketed by a bisection of DEM stopping layers.
 // Returns false when Ctrl-C stopped the runs.
 bool stopping_verification(const VerificationRequest& args, const Case& c,
@@ -112,17 +132,28 @@ bool stopping_verification(const VerificationRequest& args, const Case& c,
               << format_quantity(plan.floor, "mm", 3) << " or up to "
               << format_quantity(plan.ceiling, "mm", 3) << " if an edge holds), to "
               << format_quantity(plan.tolerance, "mm", 3) << ": " << plan.cost << '\n';
+  const EarlierLayers earlier = earlier_layers(args.start_from, c, plan);
+  if (args.log && !earlier.empty())
+    *args.log << "verify: " << args.start_from.string() << " brackets h_stop at "
+              << format_quantity(earlier.begin()->first, "mm", 3) << " .. "
+              << format_quantity(earlier.rbegin()->first, "mm", 3)
+              << ": its layers are not made again\n";
   install_interrupt_handler();
-  const StoppingVerification v =
-      verify_stopping(args.case_file, args.sets, plan, budget, runs, args.log);
+  StoppingVerification v =
+      verify_stopping(args.case_file, args.sets, plan, budget, runs, args.log, earlier);
   if (v.status == "interrupted") return false;
+  if (v.seconds_needed > 0.0)  // refused on the budget: the command that holds it
+    v.status += ": " + this_check(args) + " --verify dem" +
+                (args.thickness_tolerance.empty()
+                     ? std::string()
+                     : " --thickness-tolerance " + shell_word(args.thickness_tolerance)) +
+                " --budget " + budget_holding(v.seconds_needed);
   if (v.bisection.steps.empty() && v.status != "done")
-    record.verdict.reasons.push_back(
-        "stopping thickness not verified on the particle rung: " + v.status + ": " +
-        this_check(args) + " --verify dem --budget " + budget_holding(plan.seconds));
+    record.verdict.reasons.push_back("stopping thickness not verified on the particle rung: " +
+                                     v.status);
   else
     apply_stopping_verification(c, plan, v, record);
-  if (!v.bisection.steps.empty())
+  if (!v.last_run.empty())
     record.simulation_runs.push_back(std::filesystem::absolute(v.last_run).string());
   return true;
 }
@@ -219,6 +250,10 @@ std::string cone_flow_pattern_command(const VerificationRequest& args, const Cas
 bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord& record) {
   const std::filesystem::path& runs = args.runs;
   const Hopper* h = std::get_if<Hopper>(&c.equipment);
+  if (!args.start_from.empty() && (args.mode != "dem" || c.kind() != EquipmentKind::chute))
+    throw InputError("--start-from", "",
+                     "only with --verify dem on a chute (an earlier search of its stopping "
+                     "thickness)");
   if (!h)
     return args.mode == "dem" && c.kind() == EquipmentKind::chute
                ? stopping_verification(args, c, runs, record)

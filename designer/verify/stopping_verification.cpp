@@ -147,7 +147,7 @@ StoppingVerification verify_stopping(const std::string& case_file,
                                      const std::vector<std::string>& sets,
                                      const StoppingVerificationPlan& plan, double budget,
                                      const std::filesystem::path& runs_folder,
-                                     std::ostream* progress) {
+                                     std::ostream* progress, const EarlierLayers& earlier) {
   StoppingVerification v;
   const BenchPoint point = layer_run_point();
   const auto folder_of = [&](double h) {
@@ -156,7 +156,13 @@ StoppingVerification verify_stopping(const std::string& case_file,
   // The layers kept cost nothing: the bisection replays those it would read back before its
   // first new one; when it needs a new one, those of any other search at the angle narrow its
   // band first (made from another band, say), and only the runs still to make are budgeted.
+  const auto earlier_answer = [&](double h) -> std::optional<bool> {
+    const auto near = earlier.lower_bound(h - 0.5 * kLayerGrid);
+    if (near != earlier.end() && near->first <= h + 0.5 * kLayerGrid) return near->second;
+    return std::nullopt;
+  };
   const auto kept_answer = [&](double h) -> std::optional<bool> {
+    if (const auto answer = earlier_answer(h)) return answer;
     const auto saved =
         saved_run_of(layer_run_question(case_file, sets, h), point, ".", folder_of(h));
     return saved ? flows_in(*saved) : std::nullopt;
@@ -165,7 +171,9 @@ StoppingVerification verify_stopping(const std::string& case_file,
   ThresholdBisection kept = bisect_flow_threshold(low, high, plan.tolerance, kept_answer,
                                                   plan.floor, plan.ceiling, kLayerGrid);
   if (kept.end == ThresholdBisection::End::stopped) {
-    std::tie(low, high) = search_band(plan, kept_layers(runs_folder, folder_of, kept_answer));
+    std::map<double, bool> layers = kept_layers(runs_folder, folder_of, kept_answer);
+    layers.insert(earlier.begin(), earlier.end());
+    std::tie(low, high) = search_band(plan, layers);
     if (low != plan.low || high != plan.high) {
       if (progress)
         *progress << "verify: layers kept from an earlier search narrow it to " << mm(low) << " .. "
@@ -179,6 +187,10 @@ StoppingVerification verify_stopping(const std::string& case_file,
     const int to_make = std::max(1, runs - static_cast<int>(kept.steps.size()));
     const double needed = to_make * plan.seconds / plan.runs;
     if (needed > budget) {
+      v.bisection = kept;
+      v.seconds_needed = needed;
+      for (const auto& step : kept.steps)  // the runs behind it, for the record's provenance
+        if (!earlier_answer(step.size)) v.last_run = folder_of(step.size);
       v.status = "the bisection needs about " + std::to_string(to_make) + " more DEM layers" +
                  (kept.steps.empty() ? std::string()
                                      : " (" + std::to_string(kept.steps.size()) + " kept)") +
@@ -191,6 +203,10 @@ StoppingVerification verify_stopping(const std::string& case_file,
   double thickest_rest = 0.0;  // [m] trimmed thickness of the thickest layer at rest so far
   const auto judge_at = [&](double h) -> std::optional<bool> {
     if (progress) *progress << "verify: DEM layer " << mm(h) << " ..." << std::flush;
+    if (const auto answer = earlier_answer(h)) {
+      if (progress) *progress << ' ' << (*answer ? "flows" : "rests") << " (earlier record)\n";
+      return answer;
+    }
     bool made = false;
     v.last_run = folder_of(h);
     const BenchRun run =
@@ -224,6 +240,19 @@ void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& 
   if (b.end == End::stopped) {
     note = "stopping thickness not verified on the " + rung + ": " + v.status +
            (b.steps.empty() ? std::string() : " (layers so far: " + outcomes(b) + ")");
+    if (b.stops_at < b.flows_at) {  // both seen (NaN compares false): the bracket so far
+      Estimate h;
+      h.value = 0.5 * (b.stops_at + b.flows_at);
+      h.low = b.stops_at;
+      h.high = b.flows_at;
+      h.unit = "m";
+      h.display_unit = "mm";
+      h.model = "DEM (" + plan.law + ") periodic layers at " + angle + ", cut short at " +
+                mm(b.flows_at - b.stops_at) + " of " + mm(plan.tolerance) + ": rests at " +
+                mm(b.stops_at) + ", flows at " + mm(b.flows_at);
+      h.rung = Rung::L3;
+      record.results.emplace_back("stopping_thickness_so_far", std::move(h));
+    }
   } else if (b.end == End::bracketed) {
     Estimate h;
     h.value = 0.5 * (b.stops_at + b.flows_at);

@@ -10,6 +10,7 @@
 // in a design's time; a layer holds about 1 100 of them for 30 mm.
 #include <filesystem>
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,25 +59,35 @@ struct StoppingVerification {
   ThresholdBisection bisection;
   std::string status = "done";  // or why it stopped
   double wall_seconds = 0.0;    // [s] of the runs made now
+  double seconds_needed = 0.0;  // [s] the estimate of the layers still to make, when the budget
+                                // refused them (0 otherwise)
   // [m] the thickness the thickest layer that came to rest measured at its end (trimmed to
   // bisection.stops_at)
   std::optional<double> rested_thickness;
   std::filesystem::path last_run;  // the folder of the last layer judged
 };
 
+// Layers judged by an earlier search at this angle whose runs are not here (another machine's,
+// say), as its record gives them: thickness [m] -> flows.
+using EarlierLayers = std::map<double, bool>;
+
 // Runs the plan below `runs_folder` (runs already there are read back, and layers kept from any
-// earlier search at this angle narrow the band it starts from); the plan's estimate
-// must fit `budget_seconds`, less what the runs kept already answer, or none is started and
-// the status says what it would take.
+// earlier search at this angle, in the folder or `earlier`, narrow the band it starts from;
+// `earlier` answer for their thickness without a run); the plan's estimate must fit
+// `budget_seconds`, less what the layers kept already answer, or none is started and the status
+// says what it would take (the bisection then holds the layers kept).
 StoppingVerification verify_stopping(const std::string& case_file,
                                      const std::vector<std::string>& sets,
                                      const StoppingVerificationPlan& plan, double budget_seconds,
                                      const std::filesystem::path& runs_folder,
-                                     std::ostream* progress);
+                                     std::ostream* progress, const EarlierLayers& earlier = {});
 
 // The record with the particle rung's h_stop bracket in place of the reduced stopping thickness
 // (kept beside it), judged again; a note says verified (the bracket meets the reduced band) or
-// contradicted (it lies outside it), with the layers and the runs' time.
+// contradicted (it lies outside it), with the layers and the runs' time. A search cut short with
+// a layer at rest below one that flows leaves its bracket so far beside the reduced one
+// (stopping_thickness_so_far, not judged), where `--start-from` and `calibrate --stopping` read
+// it.
 void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& plan,
                                  const StoppingVerification& v, DesignRecord& record);
 

@@ -5,6 +5,8 @@
 // observes arching at the outlet and bisects the width on the particle rung.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "../designer/verify/kept_runs.hpp"
@@ -267,7 +269,25 @@ TEST(DesignVerifyScenes, ChuteStoppingThicknessIsBracketedByLayers) {
   const auto again = design_json(dir, args, "cases/inclined_plane_37.toml");
   EXPECT_EQ(again["results"]["stopping_thickness"], h);
   EXPECT_TRUE(said(again, "; 0 s of runs)"));
+  // Its record alone (another machine: no runs kept) starts a search that makes no layer.
+  const fs::path elsewhere = scratch_folder("feedflow_verify_chute_elsewhere", true);
+  std::ofstream(elsewhere / "earlier.json") << j.dump(2);
+  std::string no_time = args;
+  no_time.replace(no_time.find("--budget 1h"), 11, "--budget 1s");
+  const auto resumed = design_json(elsewhere, no_time + " --start-from earlier.json",
+                                   "cases/inclined_plane_37.toml");
+  EXPECT_NEAR(resumed["results"]["stopping_thickness"]["low"].get<double>(), h["low"].get<double>(),
+              1e-9);
+  EXPECT_NEAR(resumed["results"]["stopping_thickness"]["high"].get<double>(),
+              h["high"].get<double>(), 1e-9);
+  EXPECT_TRUE(said(resumed, "; 0 s of runs)"));
+  // Only a chute's particle-rung search starts from one: exit 2 naming the option.
+  const feedflow::testing::Run cel = run_feedflow(
+      "design cases/inclined_plane_37.toml -q --verify cel --start-from earlier.json", elsewhere);
+  EXPECT_EQ(cel.exit_code, 2);
+  EXPECT_NE(cel.err.find("--start-from"), std::string::npos) << cel.err;
   fs::remove_all(dir);
+  fs::remove_all(elsewhere);
 }
 
 // `auto` on a MARGINAL drum (33 rpm: Fr = 0.0883, within 25 % of the rolling | cascading boundary

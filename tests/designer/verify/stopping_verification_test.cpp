@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <fstream>
+
+#include "designer/calibrate/stopping_records.hpp"
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/design_verification.hpp"
@@ -11,6 +14,7 @@
 #include "kept_runs.hpp"
 #include "models/core/errors.hpp"
 #include "reports/result_format.hpp"
+#include "reports/results_json.hpp"
 
 namespace feedflow {
 namespace {
@@ -157,6 +161,104 @@ TEST(StoppingVerification, ABudgetBelowTheEstimateStartsNoLayer) {
   EXPECT_FALSE(fs::exists(request.runs / "verify_stopping"));
   EXPECT_EQ(find_estimate(record.results, "stopping_thickness")->rung, Rung::L0);
   fs::remove_all(request.runs);
+}
+
+// An earlier record's bracket (a search made on another machine, its runs gone) answers for its
+// two layers without a run: with only the layers inside it kept here, a budget of nothing still
+// brackets h_stop inside it, a record's layer named as such; without it, a run is wanted.
+TEST(StoppingVerification, AnEarlierRecordsLayersAreNotMadeAgain) {
+  const std::string file = "tests/data/dem_layer_twin.toml";
+  const Case c = load_case(file, std::vector<SetOverride>{});
+  const DesignRecord record = design_check(c, ModelChoices{});
+  const auto plan = plan_stopping_verification(c, record, 0.0);
+  const fs::path runs = scratch("earlier");
+  const double rests = 0.0105, flows = rests + 3.5 * plan.tolerance, threshold = rests + 0.02;
+  // The layers a bisection of the record's bracket asks inside it, laid down here.
+  const auto inside = bisect_flow_threshold(
+      rests, flows, plan.tolerance,
+      [&](double h) -> std::optional<bool> {
+        if (h == rests || h == flows) return h == flows;  // the record's, not laid down
+        testing::lay_down_layer(file, {}, runs, h, h >= threshold ? "flowing" : "at rest", h, 30.0);
+        return h >= threshold;
+      },
+      0.0, 0.0, kLayerGrid);
+  ASSERT_EQ(inside.end, ThresholdBisection::End::bracketed);
+  ASSERT_GE(inside.steps.size(), 4u);  // two of the record's, at least two made inside
+  std::ostringstream progress;
+  const EarlierLayers earlier{{rests, false}, {flows, true}};
+  const StoppingVerification v = verify_stopping(file, {}, plan, 0.0, runs, &progress, earlier);
+  EXPECT_EQ(v.status, "done") << progress.str();
+  EXPECT_EQ(v.wall_seconds, 0.0);
+  ASSERT_EQ(v.bisection.end, ThresholdBisection::End::bracketed) << progress.str();
+  EXPECT_EQ(v.bisection.stops_at, inside.stops_at);
+  EXPECT_EQ(v.bisection.flows_at, inside.flows_at);
+  EXPECT_LE(v.bisection.flows_at - v.bisection.stops_at, plan.tolerance);
+  std::size_t named = 0;
+  for (auto at = progress.str().find("(earlier record)"); at != std::string::npos;
+       at = progress.str().find("(earlier record)", at + 1))
+    ++named;
+  EXPECT_GE(named, 1u) << progress.str();
+  const StoppingVerification alone = verify_stopping(file, {}, plan, 0.0, runs, nullptr);
+  EXPECT_NE(alone.status, "done");  // the record's layers were what answered
+  fs::remove_all(runs);
+}
+
+// A search cut short (its budget below the layers still to make) keeps its bracket so far beside
+// the reduced answer, unjudged; its record read back gives that bracket, and a search started
+// from it on a machine without the runs begins there (the record keeps a thickness to 1 nm), while
+// one at another angle is refused naming the record's key.
+TEST(StoppingVerification, ASearchCutShortLeavesABracketToStartFrom) {
+  const std::string file = "tests/data/dem_layer_twin.toml";
+  const Case c = load_case(file, std::vector<SetOverride>{});
+  DesignRecord record = design_check(c, ModelChoices{});
+  const auto plan = plan_stopping_verification(c, record, 0.0);
+  VerificationRequest request;
+  request.case_file = file;
+  request.mode = "dem";
+  request.budget = "1 s";
+  request.runs = scratch("cut_short");
+  const double rests = plan.high + plan.tolerance, flows = rests + 4.0 * plan.tolerance;
+  testing::lay_down_layer(file, {}, request.runs, rests, "at rest", rests, 30.0);
+  testing::lay_down_layer(file, {}, request.runs, flows, "flowing", flows, 30.0);
+  ASSERT_TRUE(verify_design(request, c, record));
+  EXPECT_EQ(find_estimate(record.results, "stopping_thickness")->rung, Rung::L0);  // not judged
+  const Estimate* so_far = find_estimate(record.results, "stopping_thickness_so_far");
+  ASSERT_NE(so_far, nullptr) << record.verdict.reasons.back();
+  EXPECT_EQ(so_far->rung, Rung::L3);
+  EXPECT_NEAR(*so_far->low, rests, 1e-9);
+  EXPECT_NEAR(*so_far->high, flows, 1e-9);
+  EXPECT_NE(record.verdict.reasons.back().find("layers so far"), std::string::npos);
+  const fs::path saved = request.runs / "results.json";
+  std::ofstream(saved) << to_json(record).dump(2);
+  const StoppingRecord read = read_stopping_record(saved, c.material.name, "--start-from");
+  EXPECT_TRUE(read.so_far);
+  EXPECT_EQ(read.law, "hertz");
+  EXPECT_NEAR(read.stops_at, rests, 1e-9);
+  EXPECT_NEAR(read.flows_at, flows, 1e-9);
+
+  DesignRecord again = design_check(c, ModelChoices{});
+  VerificationRequest elsewhere = request;
+  elsewhere.runs = scratch("cut_short_elsewhere");
+  elsewhere.start_from = saved;
+  ASSERT_TRUE(verify_design(elsewhere, c, again));
+  const Estimate* resumed = find_estimate(again.results, "stopping_thickness_so_far");
+  ASSERT_NE(resumed, nullptr) << again.verdict.reasons.back();
+  EXPECT_NEAR(*resumed->low, rests, 1e-9);
+  EXPECT_NEAR(*resumed->high, flows, 1e-9);
+  EXPECT_NE(again.verdict.reasons.back().find("--start-from"), std::string::npos)
+      << again.verdict.reasons.back();
+
+  const Case steeper =
+      load_case(file, std::vector<SetOverride>{parse_set_override("chute.angle=40deg")});
+  DesignRecord other = design_check(steeper, ModelChoices{});
+  try {
+    verify_design(elsewhere, steeper, other);
+    ADD_FAILURE() << "a record of 37 deg started a search at 40 deg";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "inputs.chute.angle") << e.what();
+  }
+  fs::remove_all(request.runs);
+  fs::remove_all(elsewhere.runs);
 }
 
 }  // namespace
