@@ -43,6 +43,7 @@ struct BenchArguments {
   std::vector<std::string> only;   // question ids
   std::vector<std::string> rungs;  // L0..L3; empty: all
   std::string finest_cell;         // CEL points on finer cells are not run; empty: all
+  std::string matching;            // only points whose command holds this text; empty: all
   CommandOptions options;
 };
 
@@ -77,9 +78,13 @@ double finest_cell(const BenchArguments& args) {
   return h;
 }
 
-// The point is of a chosen rung and, for a CEL point, on cells no finer than --finest-cell.
-bool wanted_point(const BenchArguments& args, double finest, const BenchPoint& p) {
+// The point is of a chosen rung, its command (as --list shows it) holds --matching and, for a CEL
+// point, it is on cells no finer than --finest-cell.
+bool wanted_point(const BenchArguments& args, double finest, const BenchQuestion& q,
+                  const BenchPoint& p) {
   if (finest > 0.0 && p.cell_size && *p.cell_size < finest * (1.0 - 1e-9)) return false;
+  if (!args.matching.empty() && bench_invocation(q, p).find(args.matching) == std::string::npos)
+    return false;
   return args.rungs.empty() || std::find(args.rungs.begin(), args.rungs.end(), p.rung) != args.rungs.end();
 }
 
@@ -132,11 +137,13 @@ void check_case_files(const std::vector<BenchQuestion>& questions,
   }
 }
 
-void list_bench(const std::vector<BenchQuestion>& questions) {
+void list_bench(const std::vector<BenchQuestion>& questions, const std::string& matching) {
   for (const auto& q : questions) {
     std::cout << q.id << ": " << q.title << '\n';
     for (const auto& p : q.points)
-      std::cout << "  " << (p.quick ? "quick " : "full  ") << p.rung << "  " << bench_invocation(q, p) << '\n';
+      if (bench_invocation(q, p).find(matching) != std::string::npos)
+        std::cout << "  " << (p.quick ? "quick " : "full  ") << p.rung << "  "
+                  << bench_invocation(q, p) << '\n';
   }
 }
 
@@ -156,7 +163,7 @@ BenchRuns make_runs(const BenchArguments& args, double finest,
   std::set<std::filesystem::path> seen;
   for (const auto& q : questions)
     for (const auto& p : q.points)
-      if ((!args.quick || p.quick) && wanted_point(args, finest, p) &&
+      if ((!args.quick || p.quick) && wanted_point(args, finest, q, p) &&
           seen.insert(bench_run_folder(runs_root, q, p)).second)
         todo.emplace_back(&q, &p);
   BenchRuns runs;
@@ -269,7 +276,7 @@ int run_bench(const BenchArguments& args) {
   const std::vector<BenchQuestion> questions = selected_questions(args);
   const double finest = finest_cell(args);
   if (args.list) {
-    list_bench(questions);
+    list_bench(questions, args.matching);
     return kExitOk;
   }
   const std::filesystem::path cases_root = shipped_case_root();
@@ -355,6 +362,11 @@ void add_bench_command(Command& program, int& exit_code) {
           "--finest-cell", args->finest_cell,
           "CEL points on cells finer than this are not run (each halving costs about 8x), e.g. 5mm")
       .type_name("LENGTH");
+  command
+      .option("--matching", args->matching,
+              "only the points whose command (as --list shows it) holds this text, e.g. "
+              "\"verify dem\" for the particle rung's bisections")
+      .type_name("TEXT");
   command
       .option("--out", args->options.out,
               "output folder (default out/bench); runs already in it are read back, not run again")

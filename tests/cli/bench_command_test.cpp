@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "run_feedflow.hpp"
@@ -108,6 +110,27 @@ TEST(BenchCommand, FinestCellLeavesFinerCelPointsUnrun) {
       EXPECT_EQ(a["status"], "not run") << a.dump();
     }
   EXPECT_GE(cel, 4);  // 20, 10, 5, 2.5 mm and finer
+  fs::remove_all(dir);
+}
+
+// --matching runs only the points whose command holds the text: the 37 deg plane's model
+// alternatives named by "stopping_thickness=" are run (two L0 points), every other point of the
+// question (the L1 deposit, CEL levels, the DEM runs) stays "not run"; --list shows just those.
+TEST(BenchCommand, MatchingRunsOnlyThePointsWhoseCommandHoldsTheText) {
+  const fs::path dir = scratch_folder("feedflow_bench", true);
+  const std::string only = "--only chute_stopping_thickness_37 --matching stopping_thickness=";
+  const feedflow::testing::Run listed = run_feedflow("bench --list " + only, dir);
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_EQ(std::count(listed.out.begin(), listed.out.end(), '\n'), 3) << listed.out;
+  const feedflow::testing::Run r = run_feedflow("bench " + only + " --out b", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 run(s) made, 0 read back"), std::string::npos) << r.out;
+  int run = 0, not_run = 0;
+  const auto table = nlohmann::json::parse(slurp(dir / "b" / "bench.json"));
+  for (const auto& a : table["questions"][0]["answers"])
+    (a["status"] == "not run" ? not_run : run) += 1;
+  EXPECT_EQ(run, 2);
+  EXPECT_GE(not_run, 10);
   fs::remove_all(dir);
 }
 
