@@ -143,9 +143,10 @@ void add_design_command(Command& program, int& exit_code) {
       .type_name("THICKNESS");
   command
       .option("--start-from", args->start_from,
-              "--verify dem on a chute: an earlier design's results.json at the same angle (its "
-              "search finished or cut short, on this machine or another): the layers of its "
-              "bracket are not made again, the bisection goes on inside it")
+              "--verify dem: an earlier design's results.json of the same hopper (but its "
+              "outlet) or chute angle, its search finished or cut short, on this machine or "
+              "another: the runs of its bracket (and a hopper's at the same outlet) are not made "
+              "again, the bisection goes on inside it")
       .type_name("RESULTS.json");
   std::string model_help = "select an alternative model (repeatable):";
   for (const auto& o : model_options()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ostream>
+#include <tuple>
 
 #include "designer/bench/bench_run.hpp"
 #include "designer/verify/dem_run_estimate.hpp"
@@ -26,6 +27,9 @@ bool contacts_pull(const Case& c) {
 }
 
 std::string mm(double metres) { return format_quantity(metres, "mm", 4); }
+
+// [m] two widths this close are one (a record keeps a width to a nanometre).
+constexpr double kWidthMatch = 1e-6;
 
 std::optional<OutletOutcome> outcome_of(const BenchRun& run) {
   if (!run.done() || !run.results.contains("arching") ||
@@ -154,11 +158,20 @@ ArchingVerificationCost estimate_arching_verification(const Case& c, const Desig
 ArchingVerification verify_arching(const std::string& case_file,
                                    const std::vector<std::string>& sets, const Hopper& h,
                                    const ArchingVerificationPlan& plan, double budget,
-                                   const std::filesystem::path& runs_folder,
-                                   std::ostream* progress) {
+                                   const std::filesystem::path& runs_folder, std::ostream* progress,
+                                   const EarlierArching& earlier) {
   ArchingVerification v;
+  const auto earlier_outcome = [&](double w) -> std::optional<OutletOutcome> {
+    const auto near = earlier.widths.lower_bound(w - 0.5 * kWidthMatch);
+    if (near != earlier.widths.end() && near->first <= w + 0.5 * kWidthMatch) return near->second;
+    return std::nullopt;
+  };
   const auto judge_at = [&](double w) -> std::optional<OutletOutcome> {
     if (progress) *progress << "verify: DEM at outlet " << mm(w) << " ..." << std::flush;
+    if (const auto outcome = earlier_outcome(w)) {
+      if (progress) *progress << ' ' << to_string(*outcome) << " (earlier record)\n";
+      return outcome;
+    }
     bool made = false;
     const BenchQuestion q = arching_run_question(case_file, sets, w);
     const BenchRun run = run_or_read_back(
@@ -178,41 +191,65 @@ ArchingVerification verify_arching(const std::string& case_file,
   const bool design_kept = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
                                         arching_run_point(), ".", v.design_run)
                                .has_value();
-  if (!design_kept && plan.outlet_seconds > budget) {
-    v.status = "its run at the design outlet takes about " + format_duration(plan.outlet_seconds) +
-               " by its estimate, beyond the budget of " + format_duration(budget);
-    return v;
+  if (earlier.at_design && !design_kept) {
+    if (progress)
+      *progress << "verify: DEM at outlet " << mm(h.outlet_width) << " ... "
+                << to_string(*earlier.at_design) << " (earlier record)\n";
+    v.at_design = earlier.at_design;
+    v.flow_pattern = earlier.flow_pattern;
+    v.design_run.clear();
+  } else {
+    if (!design_kept && plan.outlet_seconds > budget) {
+      v.status = "its run at the design outlet takes about " +
+                 format_duration(plan.outlet_seconds) + " by its estimate, beyond the budget of " +
+                 format_duration(budget);
+      return v;
+    }
+    v.at_design = judge_at(h.outlet_width);
+    if (const auto run = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
+                                      arching_run_point(), ".", v.design_run))
+      v.flow_pattern = flow_pattern_of(*run, plan.law, h.outlet_width);
   }
-  v.at_design = judge_at(h.outlet_width);
-  if (const auto run = saved_run_of(arching_run_question(case_file, sets, h.outlet_width),
-                                    arching_run_point(), ".", v.design_run))
-    v.flow_pattern = flow_pattern_of(*run, plan.law, h.outlet_width);
   if (!v.at_design) return v;
+  // An earlier record's bracket is where the bisection starts: its widest outlet that arched
+  // below its narrowest that flowed.
+  double low = plan.low, high = plan.high;
+  std::optional<double> arched, flowed;
+  for (const auto& [w, outcome] : earlier.widths)
+    if (outcome == OutletOutcome::flows && !flowed) flowed = w;
+  for (const auto& [w, outcome] : earlier.widths)
+    if (outcome == OutletOutcome::arches && (!flowed || w < *flowed)) arched = w;
+  if (arched && flowed) std::tie(low, high) = std::pair{*arched, *flowed};
   // The bisection's runs already kept cost nothing: those it would read back before its first
   // new one.
   const auto kept_outcome = [&](double w) -> std::optional<OutletOutcome> {
+    if (const auto outcome = earlier_outcome(w)) return outcome;
     const BenchQuestion q = arching_run_question(case_file, sets, w);
     const auto saved = saved_run_of(q, arching_run_point(), ".",
                                     bench_run_folder(runs_folder, q, arching_run_point()));
     return saved ? outcome_of(*saved) : std::nullopt;
   };
-  const WidthBisection kept =
-      bisect_outlet_width(plan.low, plan.high, plan.tolerance, kept_outcome);
+  const WidthBisection kept = bisect_outlet_width(low, high, plan.tolerance, kept_outcome);
   const int to_make = kept.end == WidthBisection::End::stopped
-                          ? std::max(0, plan.runs - 1 - static_cast<int>(kept.steps.size()))
+                          ? std::max(0, bisection_runs(low, high, plan.tolerance) -
+                                            static_cast<int>(kept.steps.size()))
                           : 0;
-  const double needed = to_make * v.longest_run;
+  // Each as long as the slowest run seen, or (none made here) the design outlet's estimate.
+  const double each = v.longest_run > 0.0 ? v.longest_run : plan.outlet_seconds;
+  const double needed = to_make * each;
   if (needed > budget) {
+    v.bisection = kept;
+    v.seconds_needed = needed;
     v.status =
         "the bisection needs " + std::to_string(to_make) + " more DEM runs" +
         (kept.steps.empty() ? std::string()
                             : " (" + std::to_string(kept.steps.size()) + " of its runs kept)") +
-        " of about " + format_duration(v.longest_run) + " each (" + format_duration(needed) +
+        " of about " + format_duration(each) + " each (" + format_duration(needed) +
         "), beyond the budget of " + format_duration(budget) +
         "; runs made are kept and read back, so a larger --budget continues";
     return v;
   }
-  v.bisection = bisect_outlet_width(plan.low, plan.high, plan.tolerance, judge_at);
+  v.bisection = bisect_outlet_width(low, high, plan.tolerance, judge_at);
   return v;
 }
 
@@ -257,6 +294,19 @@ void apply_arching_verification(const Case& c, const ArchingVerificationPlan& pl
   if (!v.at_design || b.end == WidthBisection::End::stopped) {
     notes.push_back(what + " not verified on the " + rung + ": " + v.status +
                     (b.steps.empty() ? std::string() : " (runs so far: " + outcomes(b) + ")"));
+    if (b.arches_at < b.flows_at) {  // both seen (NaN compares false): the bracket so far
+      Estimate width;
+      width.value = 0.5 * (b.arches_at + b.flows_at);
+      width.low = b.arches_at;
+      width.high = b.flows_at;
+      width.unit = "m";
+      width.display_unit = "mm";
+      width.model = "DEM (" + plan.law + ") bisection, cut short at " +
+                    mm(b.flows_at - b.arches_at) + " of " + mm(plan.tolerance) + ": arches at " +
+                    mm(b.arches_at) + ", flows at " + mm(b.flows_at);
+      width.rung = Rung::L3;
+      record.results.emplace_back(result_key(c, plan) + "_so_far", std::move(width));
+    }
   } else if (b.end == WidthBisection::End::bracketed) {
     Estimate width;
     width.value = 0.5 * (b.arches_at + b.flows_at);  // SI, as the reduced width and the judge

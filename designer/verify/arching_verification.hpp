@@ -13,6 +13,7 @@
 // a restart of the same width, which reads the run back).
 #include <filesystem>
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -80,25 +81,38 @@ struct ArchingVerification {
   WidthBisection bisection;
   std::string status = "done";       // or why it stopped
   double wall_seconds = 0.0;         // of the runs made now
+  double seconds_needed = 0.0;       // [s] the runs still to make, when the budget refused them
   double longest_run = 0.0;          // [s] the slowest run (its time when it was made)
   std::filesystem::path design_run;  // the design outlet's run folder
 };
 
-// Runs the plan below `runs_folder` (runs already there are read back). The design outlet's run
-// goes first (it also verifies the flow pattern: the particle rung reads it on wedges and cones
-// alike, where the continuum's cone does not converge), unless its estimate (plan.outlet_seconds)
-// exceeds `budget_seconds`; its wall time, times the bisection's runs, must fit
-// `budget_seconds`, or the bisection is not started and the status says what it would take.
+// What an earlier record of this hopper's `--verify dem` answered (`--start-from`, its runs on
+// another machine, say): the widths of its bracket (to its tolerance, or as far as a search cut
+// short went) and, when it was of the same design outlet, what that run showed.
+struct EarlierArching {
+  std::map<double, OutletOutcome> widths;           // [m]
+  std::optional<OutletOutcome> at_design;           // the design outlet's run
+  std::optional<ParticleFlowPattern> flow_pattern;  // what that run read
+};
+
+// Runs the plan below `runs_folder` (runs already there are read back; `earlier` answers for its
+// widths and the design outlet without a run, and its bracket is where the bisection starts). The
+// design outlet's run goes first (it also verifies the flow pattern: the particle rung reads it on
+// wedges and cones alike, where the continuum's cone does not converge), unless its estimate
+// (plan.outlet_seconds) exceeds `budget_seconds`; its wall time, times the bisection's runs, must
+// fit `budget_seconds`, or the bisection is not started and the status says what it would take.
 ArchingVerification verify_arching(const std::string& case_file,
                                    const std::vector<std::string>& sets, const Hopper& hopper,
                                    const ArchingVerificationPlan& plan, double budget_seconds,
-                                   const std::filesystem::path& runs_folder,
-                                   std::ostream* progress);
+                                   const std::filesystem::path& runs_folder, std::ostream* progress,
+                                   const EarlierArching& earlier = {});
 
 // The record with the particle rung's answers in place of the reduced ones (kept beside them under
 // reduced_model_key): arching at the design outlet (observed), the plan's width as the bisection's
 // bracket; judged again; a note says verified (the rung's width inside the reduced band) or
-// contradicted (outside it, at the edge that showed it), with the numbers and the runs.
+// contradicted (outside it, at the edge that showed it), with the numbers and the runs. A search
+// cut short with an outlet that arched below one that flowed leaves its bracket so far beside the
+// reduced width (<width key>_so_far, not judged), where `--start-from` reads it.
 void apply_arching_verification(const Case& c, const ArchingVerificationPlan& plan,
                                 const ArchingVerification& v, DesignRecord& record);
 

@@ -4,6 +4,7 @@
 
 #include "designer/bench/bench_plan.hpp"
 #include "designer/calibrate/stopping_records.hpp"
+#include "designer/calibrate/verified_record.hpp"
 #include "designer/simulate/solver_choice.hpp"
 #include "designer/verify/arching_verification.hpp"
 #include "designer/verify/cel_chute_estimate.hpp"
@@ -57,6 +58,80 @@ std::string budget_holding(double seconds) {
                          : format_number(std::ceil(spared / 60.0), 3) + "min";
 }
 
+// What an earlier record of the hopper's --verify dem answered (--start-from): its bracket's two
+// widths (finished or cut short) and, of the same outlet, the design outlet's run; nothing without
+// one. InputError (naming the file and the key) when it is no such record, or of another hopper
+// (but its outlet), material or law.
+EarlierArching earlier_arching(const std::filesystem::path& file, const Case& c,
+                               const DesignRecord& record, const ArchingVerificationPlan& plan) {
+  if (file.empty()) return {};
+  const VerifiedRecord j = VerifiedRecord::read(file, "--start-from", "hopper", c.material.name);
+  const Hopper& h = std::get<Hopper>(c.equipment);
+  const std::string where = file.string();
+  if (const std::string shape = j.text({"inputs", "hopper", "shape"}, "wedge or conical");
+      shape != h.shape)
+    throw InputError(where, "inputs.hopper.shape",
+                     "expected the case's " + h.shape + ", got " + shape);
+  // Every hopper input the record resolved but the outlet, as this check resolved it.
+  for (const InputValue& in : record.inputs) {
+    const double* value = std::get_if<double>(&in.value);
+    if (!value || in.key.rfind("hopper.", 0) != 0 || in.key == "hopper.outlet_width") continue;
+    const std::string name = in.key.substr(7);
+    const double was = j.number({"inputs", "hopper", name}, in.display + " as here");
+    if (std::abs(was - *value) > 1e-9 * std::max(1.0, std::abs(*value)))
+      throw InputError(where, "inputs." + in.key,
+                       "expected the case's " + in.display + " (" + format_number(*value, 6) + " " +
+                           in.si_unit + "), got " + format_number(was, 6) + " " + in.si_unit);
+  }
+  EarlierArching earlier;
+  const auto& results = j.json["results"];
+  const auto on_particles = [&](const std::string& key) {
+    return results.contains(key) && results[key].is_object() &&
+           results[key].value("rung", "") == "L3";
+  };
+  // "DEM (hysteretic_nonlinear2 + k_nc cohesion) ..." -> the law, which must be the plan's.
+  const auto check_law = [&](const std::string& key) {
+    const std::string model = j.text({"results", key, "model"}, "the verifying model");
+    const auto open = model.find('('), close = model.find(')');
+    const std::string law = model.rfind("DEM (", 0) == 0 && close != std::string::npos
+                                ? model.substr(open + 1, close - open - 1)
+                                : model;
+    if (law != plan.law)
+      throw InputError(where, "results." + key + ".model",
+                       "expected runs of the " + plan.law + " law, got " + law);
+  };
+  for (const std::string& key : {plan.quantity, plan.quantity + "_dem_spheres"})
+    for (const std::string& entry : {key, key + "_so_far"})
+      if (earlier.widths.empty() && on_particles(entry)) {
+        check_law(entry);
+        const double arches =
+            j.number({"results", entry, "low"}, "the widest outlet that arched [m]");
+        const double flows =
+            j.number({"results", entry, "high"}, "the narrowest outlet that flowed [m]");
+        if (!(arches > 0.0 && arches < flows))
+          throw InputError(where, "results." + entry,
+                           "expected a bracket: an outlet that arched below one that flowed");
+        earlier.widths = {{arches, OutletOutcome::arches}, {flows, OutletOutcome::flows}};
+      }
+  if (on_particles("arching") &&
+      std::abs(j.number({"inputs", "hopper", "outlet_width"}, "the outlet width [m]") -
+               h.outlet_width) < 1e-9) {
+    check_law("arching");
+    earlier.at_design = j.text({"results", "arching", "value"}, "arched or flowing") == "arched"
+                            ? OutletOutcome::arches
+                            : OutletOutcome::flows;
+    if (on_particles("flow_pattern"))
+      earlier.flow_pattern = ParticleFlowPattern{
+          j.text({"results", "flow_pattern", "value"}, "mass or funnel"),
+          j.text({"results", "flow_pattern", "model"}, "what the pattern was read from"), ""};
+  }
+  if (earlier.widths.empty() && !earlier.at_design)
+    throw InputError(where, "results." + plan.quantity,
+                     "expected a record of `design --verify dem` on the particle rung: its "
+                     "bracket, or its run at this outlet");
+  return earlier;
+}
+
 // --verify dem on a hopper: arching at the design outlet and the arching width by bisection on
 // the particle rung. Returns false when Ctrl-C stopped the runs.
 bool dem_verification(const VerificationRequest& args, const Case& c, const Hopper& h,
@@ -78,20 +153,22 @@ bool dem_verification(const VerificationRequest& args, const Case& c, const Hopp
               << format_quantity(plan.high, "mm", 4) << " to "
               << format_quantity(plan.tolerance, "mm", 3) << " (" << plan.runs << " runs)"
               << (cost ? ": " + cost->text : std::string()) << '\n';
+  const EarlierArching earlier = earlier_arching(args.start_from, c, record, plan);
   install_interrupt_handler();
   ArchingVerification v =
-      verify_arching(args.case_file, args.sets, h, plan, budget, runs, args.log);
+      verify_arching(args.case_file, args.sets, h, plan, budget, runs, args.log, earlier);
   if (v.status == "interrupted") return false;
-  if (!v.at_design && cost) {  // refused on the budget: the command that holds it
-    std::string again = this_check(args) + " --verify dem";
-    if (args.width_tolerance != VerificationRequest{}.width_tolerance)
-      again += " --width-tolerance " + shell_word(args.width_tolerance);
+  std::string again = this_check(args) + " --verify dem";
+  if (args.width_tolerance != VerificationRequest{}.width_tolerance)
+    again += " --width-tolerance " + shell_word(args.width_tolerance);
+  if (!v.at_design && cost)  // refused on the budget: the command that holds it
     v.status += ": " + again + " --budget " + budget_holding(cost->outlet_seconds) +
                 " makes the design outlet's run, --budget " + budget_holding(cost->seconds) +
                 " the whole plan";
-  }
+  else if (v.seconds_needed > 0.0)
+    v.status += ": " + again + " --budget " + budget_holding(v.seconds_needed);
   apply_arching_verification(c, plan, v, record);
-  if (v.at_design)
+  if (v.at_design && !v.design_run.empty())
     record.simulation_runs.push_back(std::filesystem::absolute(v.design_run).string());
   return true;
 }
@@ -250,10 +327,10 @@ std::string cone_flow_pattern_command(const VerificationRequest& args, const Cas
 bool verify_design(const VerificationRequest& args, const Case& c, DesignRecord& record) {
   const std::filesystem::path& runs = args.runs;
   const Hopper* h = std::get_if<Hopper>(&c.equipment);
-  if (!args.start_from.empty() && (args.mode != "dem" || c.kind() != EquipmentKind::chute))
+  if (!args.start_from.empty() && (args.mode != "dem" || c.kind() == EquipmentKind::drum))
     throw InputError("--start-from", "",
-                     "only with --verify dem on a chute (an earlier search of its stopping "
-                     "thickness)");
+                     "only with --verify dem on a hopper or a chute (an earlier search of its "
+                     "critical outlet width or stopping thickness)");
   if (!h)
     return args.mode == "dem" && c.kind() == EquipmentKind::chute
                ? stopping_verification(args, c, runs, record)

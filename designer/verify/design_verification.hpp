@@ -28,8 +28,8 @@ struct VerificationRequest {
   std::string tolerance = "10%";
   std::string width_tolerance = "1 mm";
   std::string thickness_tolerance;  // empty: one DEM sphere diameter
-  // --start-from: an earlier record of this chute's `--verify dem` (results.json, maybe of a
-  // search cut short); its bracket's layers answer without a run. Empty: none.
+  // --start-from: an earlier record of this hopper's or chute's `--verify dem` (results.json,
+  // maybe of a search cut short); its bracket's runs answer without a run. Empty: none.
   std::filesystem::path start_from;
   std::filesystem::path runs;   // the folder of the verification's runs
   std::ostream* log = nullptr;  // the runs' plans and phases; null: silent

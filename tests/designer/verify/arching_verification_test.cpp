@@ -3,11 +3,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <fstream>
+
 #include "designer/case/case_loader.hpp"
 #include "designer/design/design_check.hpp"
 #include "designer/verify/arching_verification.hpp"
+#include "designer/verify/design_verification.hpp"
 #include "kept_runs.hpp"
 #include "models/core/errors.hpp"
+#include "reports/results_json.hpp"
 
 namespace feedflow {
 namespace {
@@ -170,6 +174,76 @@ TEST(ArchingVerification, TheDesignOutletsRunVerifiesAConesFlowPattern) {
   EXPECT_EQ(find_estimate(arched.results, "flow_pattern")->rung, Rung::L0);
   EXPECT_EQ(find_estimate(arched.results, "flow_pattern_reduced_model"), nullptr);
   std::filesystem::remove_all(runs);
+}
+
+// A search cut short by its budget keeps its bracket so far (48 mm flows, 18 mm arches, laid down
+// with the twin's 10 mm design outlet, which arched) beside the reduced width, unjudged; its
+// record alone, on a machine without the runs, answers the design outlet and both widths, so the
+// search starts inside them and asks for the 4 runs still to make (bisecting 18-48 mm to 2 mm);
+// a record of another semi-angle is refused naming its key.
+TEST(ArchingVerification, ASearchCutShortLeavesABracketToStartFrom) {
+  BenchQuestion q;
+  q.case_file = "tests/data/dem_hopper_twin.toml";
+  q.sets = {"hopper.outlet_width=10mm"};
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path();
+  const std::string pid = std::to_string(::getpid());
+  VerificationRequest request;
+  request.case_file =
+      (std::filesystem::path(FEEDFLOW_SOURCE_DIR) / q.case_file).lexically_normal().string();
+  request.sets = q.sets;
+  request.mode = "dem";
+  request.budget = "1 s";
+  request.width_tolerance = "2 mm";
+  request.runs = tmp / ("feedflow_arching_cut_" + pid);
+  std::filesystem::remove_all(request.runs);
+  testing::lay_down_run(q, BenchPoint{}, request.runs, 0.010, "arched", 60.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, request.runs, 0.048, "flowing", 50.0, "aaaa");
+  testing::lay_down_run(q, BenchPoint{}, request.runs, 0.018, "arched", 40.0, "aaaa");
+  const Case c =
+      load_case(request.case_file, std::vector<SetOverride>{{"hopper.outlet_width", "10mm"}});
+  DesignRecord record = design_check(c, ModelChoices{});
+  ASSERT_TRUE(verify_design(request, c, record));
+  const std::string key = "mechanical_arching_width_dem_spheres";
+  const Estimate* so_far = find_estimate(record.results, key + "_so_far");
+  ASSERT_NE(so_far, nullptr) << record.verdict.reasons.back();
+  EXPECT_EQ(so_far->rung, Rung::L3);
+  EXPECT_NEAR(*so_far->low, 0.018, 1e-12);
+  EXPECT_NEAR(*so_far->high, 0.048, 1e-12);
+  EXPECT_EQ(find_estimate(record.results, key), nullptr);  // the bracket is not judged
+  const std::filesystem::path saved = request.runs / "results.json";
+  std::ofstream(saved) << to_json(record).dump(2);
+
+  VerificationRequest elsewhere = request;
+  elsewhere.runs = tmp / ("feedflow_arching_elsewhere_" + pid);
+  std::filesystem::remove_all(elsewhere.runs);
+  elsewhere.start_from = saved;
+  DesignRecord again = design_check(c, ModelChoices{});
+  ASSERT_TRUE(verify_design(elsewhere, c, again));
+  EXPECT_EQ(find_estimate(again.results, "arching")->rung, Rung::L3);  // from the record
+  const Estimate* resumed = find_estimate(again.results, key + "_so_far");
+  ASSERT_NE(resumed, nullptr) << again.verdict.reasons.back();
+  EXPECT_NEAR(*resumed->low, 0.018, 1e-9);
+  EXPECT_NEAR(*resumed->high, 0.048, 1e-9);
+  std::string notes;
+  for (const auto& r : again.verdict.reasons) notes += r + "\n";
+  EXPECT_NE(notes.find("the bisection needs 4 more DEM runs (2 of its runs kept)"),
+            std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("--start-from"), std::string::npos) << notes;
+  EXPECT_FALSE(std::filesystem::exists(elsewhere.runs));  // no run was made
+
+  const Case steeper =
+      load_case(request.case_file, std::vector<SetOverride>{{"hopper.outlet_width", "10mm"},
+                                                            {"hopper.semi_angle", "20deg"}});
+  DesignRecord other = design_check(steeper, ModelChoices{});
+  try {
+    verify_design(elsewhere, steeper, other);
+    ADD_FAILURE() << "a record of another semi-angle started the search";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "inputs.hopper.semi_angle") << e.what();
+  }
+  std::filesystem::remove_all(request.runs);
+  std::filesystem::remove_all(elsewhere.runs);
 }
 
 }  // namespace
