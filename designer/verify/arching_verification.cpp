@@ -294,29 +294,17 @@ void apply_arching_verification(const Case& c, const ArchingVerificationPlan& pl
   if (!v.at_design || b.end == WidthBisection::End::stopped) {
     notes.push_back(what + " not verified on the " + rung + ": " + v.status +
                     (b.steps.empty() ? std::string() : " (runs so far: " + outcomes(b) + ")"));
-    if (b.arches_at < b.flows_at) {  // both seen (NaN compares false): the bracket so far
-      Estimate width;
-      width.value = 0.5 * (b.arches_at + b.flows_at);
-      width.low = b.arches_at;
-      width.high = b.flows_at;
-      width.unit = "m";
-      width.display_unit = "mm";
-      width.model = "DEM (" + plan.law + ") bisection, cut short at " +
-                    mm(b.flows_at - b.arches_at) + " of " + mm(plan.tolerance) + ": arches at " +
-                    mm(b.arches_at) + ", flows at " + mm(b.flows_at);
-      width.rung = Rung::L3;
-      record.results.emplace_back(result_key(c, plan) + "_so_far", std::move(width));
-    }
+    if (b.arches_at < b.flows_at)  // both seen (NaN compares false): the bracket so far
+      record.results.emplace_back(
+          result_key(c, plan) + "_so_far",
+          particle_bracket(b.arches_at, b.flows_at,
+                           "DEM (" + plan.law + ") bisection, cut short at " +
+                               mm(b.flows_at - b.arches_at) + " of " + mm(plan.tolerance) +
+                               ": arches at " + mm(b.arches_at) + ", flows at " + mm(b.flows_at)));
   } else if (b.end == WidthBisection::End::bracketed) {
-    Estimate width;
-    width.value = 0.5 * (b.arches_at + b.flows_at);  // SI, as the reduced width and the judge
-    width.low = b.arches_at;
-    width.high = b.flows_at;
-    width.unit = "m";
-    width.display_unit = "mm";
-    width.model = "DEM (" + plan.law + ") bisection: arches at " + mm(b.arches_at) + ", flows at " +
-                  mm(b.flows_at);
-    width.rung = Rung::L3;
+    const Estimate width = particle_bracket(b.arches_at, b.flows_at,
+                                            "DEM (" + plan.law + ") bisection: arches at " +
+                                                mm(b.arches_at) + ", flows at " + mm(b.flows_at));
     replace_beside(record.results, result_key(c, plan), width);
     notes.push_back(what + " verified on the " + rung + ": it arches at " + mm(b.arches_at) +
                     " and flows at " + mm(b.flows_at) + ", inside " + band + " (" +

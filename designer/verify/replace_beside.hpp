@@ -11,4 +11,8 @@ namespace feedflow {
 // keeps the reduced estimate right after it; appends `rung` when there is none.
 void replace_beside(Estimates& results, const std::string& key, Estimate rung);
 
+// The particle rung's bracket on a length (a threshold bisection's largest size that stopped and
+// smallest that flowed, [m]) as an estimate on L3: its middle, the two as its band, shown in mm.
+Estimate particle_bracket(double stops_at, double flows_at, std::string model);
+
 }  // namespace feedflow

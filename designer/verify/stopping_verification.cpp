@@ -240,29 +240,19 @@ void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& 
   if (b.end == End::stopped) {
     note = "stopping thickness not verified on the " + rung + ": " + v.status +
            (b.steps.empty() ? std::string() : " (layers so far: " + outcomes(b) + ")");
-    if (b.stops_at < b.flows_at) {  // both seen (NaN compares false): the bracket so far
-      Estimate h;
-      h.value = 0.5 * (b.stops_at + b.flows_at);
-      h.low = b.stops_at;
-      h.high = b.flows_at;
-      h.unit = "m";
-      h.display_unit = "mm";
-      h.model = "DEM (" + plan.law + ") periodic layers at " + angle + ", cut short at " +
-                mm(b.flows_at - b.stops_at) + " of " + mm(plan.tolerance) + ": rests at " +
-                mm(b.stops_at) + ", flows at " + mm(b.flows_at);
-      h.rung = Rung::L3;
-      record.results.emplace_back("stopping_thickness_so_far", std::move(h));
-    }
+    if (b.stops_at < b.flows_at)  // both seen (NaN compares false): the bracket so far
+      record.results.emplace_back(
+          "stopping_thickness_so_far",
+          particle_bracket(b.stops_at, b.flows_at,
+                           "DEM (" + plan.law + ") periodic layers at " + angle +
+                               ", cut short at " + mm(b.flows_at - b.stops_at) + " of " +
+                               mm(plan.tolerance) + ": rests at " + mm(b.stops_at) + ", flows at " +
+                               mm(b.flows_at)));
   } else if (b.end == End::bracketed) {
-    Estimate h;
-    h.value = 0.5 * (b.stops_at + b.flows_at);
-    h.low = b.stops_at;
-    h.high = b.flows_at;
-    h.unit = "m";
-    h.display_unit = "mm";
-    h.model = "DEM (" + plan.law + ") periodic layers at " + angle + ": rests at " +
-              mm(b.stops_at) + ", flows at " + mm(b.flows_at);
-    h.rung = Rung::L3;
+    const Estimate h =
+        particle_bracket(b.stops_at, b.flows_at,
+                         "DEM (" + plan.law + ") periodic layers at " + angle + ": rests at " +
+                             mm(b.stops_at) + ", flows at " + mm(b.flows_at));
     replace_beside(record.results, "stopping_thickness", h);
     const bool inside =
         plan.reduced_low && b.stops_at <= *plan.reduced_high && b.flows_at >= *plan.reduced_low;
