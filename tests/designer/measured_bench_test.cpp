@@ -73,6 +73,24 @@ TEST(MeasuredBench, CheapestWithinATolerance) {
   }
 }
 
+// The 37 deg plane's reference is the particle rung's (the seed's law in stopping layers bisected
+// to one sphere: rests at 26.52 mm, flows at 28.24 mm, 27.38 +- 0.86 mm, 1 756 s on one thread);
+// within 10 % the cheapest answer is a reduced one in a third of a second (the chute law calibrated
+// on the same rung: 25.87 mm, 5.5 % off; the L1 deposit beside it 25.48 mm, 7.0 %; which of the
+// two is cheaper is the timer's noise).
+TEST(MeasuredBench, ThePlanesParticleReferenceAt37Deg) {
+  const MeasuredQuestion& plane = *measured_bench().find("chute_stopping_thickness_37");
+  ASSERT_TRUE(plane.reference);
+  EXPECT_NEAR(*plane.reference, 0.027381, 1e-6);
+  EXPECT_NEAR(*plane.error_bar, 0.000863, 1e-6);
+  EXPECT_EQ(plane.unit, "m");
+  EXPECT_TRUE(reference_resolves(plane, 0.10));
+  const MeasuredAnswer* ten = cheapest_within(plane, 0.10);
+  ASSERT_NE(ten, nullptr);
+  EXPECT_TRUE(ten->rung == "L0" || ten->rung == "L1") << ten->rung;
+  EXPECT_LT(*ten->error, 0.10);
+}
+
 // A table whose pilot hopper rate converged with order `order` (10, 5, 2.5 mm).
 MeasuredBench table_with_order(double order) {
   return parse_measured_bench(R"({"measured": {"date": "2026-12-05", "machine": "test", "commits": {}},
