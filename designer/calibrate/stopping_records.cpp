@@ -41,7 +41,7 @@ StoppingRecord read_stopping_record(const std::filesystem::path& path, const std
     throw InputError(file, key + ".model",
                      "expected \"DEM (LAW) periodic layers ...\", got \"" + model + "\"");
   r.law = model.substr(open + 1, close - open - 1);
-  r.rung = "L3 " + model.substr(0, model.find(" at ")) + (r.so_far ? " (cut short)" : "");
+  r.rung = "L3 " + model.substr(0, model.find(" at "));
   r.commits = j.run_commits();
   r.command = path.filename().string();
   if (const auto p = j.json.find("provenance"); p != j.json.end() && p->is_object())

@@ -329,7 +329,8 @@ void observe_stopping_records(const CalibrateArguments& args, const Material& ma
     point.reference.error_bar = r.observation.error_bar;
     point.reference.unit = "m";
     point.reference.source = "rests at " + format_quantity(r.stops_at, "mm", 4) + ", flows at " +
-                             format_quantity(r.flows_at, "mm", 4) + " (" + r.command + ")";
+                             format_quantity(r.flows_at, "mm", 4) +
+                             (r.so_far ? ", its search cut short" : "") + " (" + r.command + ")";
     o.points.push_back(std::move(point));
     o.observed.push_back(o.observations.size());
     o.observations.push_back(r.observation);

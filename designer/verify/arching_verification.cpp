@@ -241,7 +241,8 @@ ArchingVerification verify_arching(const std::string& case_file,
     v.bisection = kept;
     v.seconds_needed = needed;
     v.status =
-        "the bisection needs " + std::to_string(to_make) + " more DEM runs" +
+        "the bisection needs " + std::to_string(to_make) + " more DEM run" +
+        (to_make == 1 ? "" : "s") +
         (kept.steps.empty() ? std::string()
                             : " (" + std::to_string(kept.steps.size()) + " of its runs kept)") +
         " of about " + format_duration(each) + " each (" + format_duration(needed) +

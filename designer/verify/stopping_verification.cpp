@@ -191,7 +191,8 @@ StoppingVerification verify_stopping(const std::string& case_file,
       v.seconds_needed = needed;
       for (const auto& step : kept.steps)  // the runs behind it, for the record's provenance
         if (!earlier_answer(step.size)) v.last_run = folder_of(step.size);
-      v.status = "the bisection needs about " + std::to_string(to_make) + " more DEM layers" +
+      v.status = "the bisection needs about " + std::to_string(to_make) + " more DEM layer" +
+                 (to_make == 1 ? "" : "s") +
                  (kept.steps.empty() ? std::string()
                                      : " (" + std::to_string(kept.steps.size()) + " kept)") +
                  ", " + format_duration(needed) + " by their estimate, beyond the budget of " +

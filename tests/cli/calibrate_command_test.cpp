@@ -437,6 +437,32 @@ TEST(CalibrateCommand, TheParticleRungsBracketsCalibrateTheChuteLaw) {
   fs::remove_all(dir);
 }
 
+// A search cut short counts with its wider bracket (35 deg: rests at 54.4 mm, flows at 59.8 mm,
+// its source saying so); with three fitted angles theta1 is fitted too, and the particle rung puts
+// it at 32.8 deg, above the seed's 29.5 deg plane where the pine flows (tan theta1 < tan 29.5 deg
+// is required there): the layers' h_stop doubles from 37 to 35 deg, which no Pouliquen law with a
+// lower theta1 follows.
+TEST(CalibrateCommand, ACutShortBracketCountsAndPutsTheta1AboveTheSeedsFlowingPlane) {
+  const fs::path dir = scratch_folder("feedflow_calibrate_so_far", true);
+  const fs::path data = fs::path(FEEDFLOW_TEST_DATA_DIR) / "verified_hstop";
+  std::string records;
+  for (const char* name : {"plane_35deg_so_far.json", "plane_37deg.json", "plane_42deg.json"})
+    records += " " + (data / name).string();
+  const feedflow::testing::Run r = run_feedflow(
+      "calibrate loblolly_pine --against dem --case cases/inclined_plane_29_5.toml --stopping" +
+          records + " --out c --write pine.toml",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto json = nlohmann::json::parse(slurp(dir / "c" / "calibration.json"));
+  EXPECT_NE(json["points"][0]["reference"]["source"].get<std::string>().find("cut short"),
+            std::string::npos);
+  EXPECT_NEAR(json["points"][0]["reference"]["error_bar"].get<double>(), 0.002682, 1e-6);
+  const auto& law = json["stopping_thickness_law"];
+  ASSERT_TRUE(law["theta1_fitted"].get<bool>());
+  EXPECT_GT(feedflow::in_degrees(law["theta1_after"]["value"].get<double>()), 29.5);
+  fs::remove_all(dir);
+}
+
 // Bad input is exit 2 naming the flag, before any run: a list without a unit, too coarse a CEL
 // level, levels that do not double, a held-out point without '@', one fitted point.
 TEST(CalibrateCommand, BadInputIsRefusedByFlag) {
