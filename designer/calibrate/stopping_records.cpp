@@ -36,11 +36,7 @@ StoppingRecord read_stopping_record(const std::filesystem::path& path, const std
   // "DEM (hysteretic_nonlinear2) periodic layers at 42 deg: rests at ..." -> the law, the rung in
   // words.
   const std::string model = j.text({"results", entry, "model"}, "the verifying model");
-  const auto open = model.find('('), close = model.find(')');
-  if (model.rfind("DEM (", 0) != 0 || close == std::string::npos)
-    throw InputError(file, key + ".model",
-                     "expected \"DEM (LAW) periodic layers ...\", got \"" + model + "\"");
-  r.law = model.substr(open + 1, close - open - 1);
+  r.law = j.dem_law(entry);
   r.rung = "L3 " + model.substr(0, model.find(" at "));
   r.commits = j.run_commits();
   r.command = path.filename().string();

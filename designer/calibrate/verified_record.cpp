@@ -64,6 +64,15 @@ std::string VerifiedRecord::text(const std::vector<std::string>& keys,
   return v.get<std::string>();
 }
 
+std::string VerifiedRecord::dem_law(const std::string& result) const {
+  const std::string model = text({"results", result, "model"}, "the verifying model");
+  const auto close = model.find(')');
+  if (model.rfind("DEM (", 0) != 0 || close == std::string::npos)
+    throw InputError(file.string(), "results." + result + ".model",
+                     "expected \"DEM (LAW) ...\", got \"" + model + "\"");
+  return model.substr(5, close - 5);
+}
+
 std::set<std::string> VerifiedRecord::run_commits() const {
   std::set<std::filesystem::path> folders;
   if (json.contains("provenance") && json["provenance"].contains("simulation_runs"))

@@ -23,6 +23,8 @@ struct VerifiedRecord {
   // The value at `keys` (a key may hold a dot: "material.name"); `expected` says what it should be.
   double number(const std::vector<std::string>& keys, const std::string& expected) const;
   std::string text(const std::vector<std::string>& keys, const std::string& expected) const;
+  // The DEM law that results.<result>.model names ("DEM (LAW) ..."); InputError otherwise.
+  std::string dem_law(const std::string& result) const;
 
   // The commits (read from each run.json) of the runs its provenance names, and of the runs beside
   // them (a bisection's runs share its verification folder).

@@ -91,12 +91,7 @@ EarlierArching earlier_arching(const std::filesystem::path& file, const Case& c,
   };
   // "DEM (hysteretic_nonlinear2 + k_nc cohesion) ..." -> the law, which must be the plan's.
   const auto check_law = [&](const std::string& key) {
-    const std::string model = j.text({"results", key, "model"}, "the verifying model");
-    const auto open = model.find('('), close = model.find(')');
-    const std::string law = model.rfind("DEM (", 0) == 0 && close != std::string::npos
-                                ? model.substr(open + 1, close - open - 1)
-                                : model;
-    if (law != plan.law)
+    if (const std::string law = j.dem_law(key); law != plan.law)
       throw InputError(where, "results." + key + ".model",
                        "expected runs of the " + plan.law + " law, got " + law);
   };
