@@ -161,10 +161,8 @@ ArchingVerification verify_arching(const std::string& case_file,
                                    const std::filesystem::path& runs_folder, std::ostream* progress,
                                    const EarlierArching& earlier) {
   ArchingVerification v;
-  const auto earlier_outcome = [&](double w) -> std::optional<OutletOutcome> {
-    const auto near = earlier.widths.lower_bound(w - 0.5 * kWidthMatch);
-    if (near != earlier.widths.end() && near->first <= w + 0.5 * kWidthMatch) return near->second;
-    return std::nullopt;
+  const auto earlier_outcome = [&](double w) {
+    return answered_near(earlier.widths, w, kWidthMatch);
   };
   const auto judge_at = [&](double w) -> std::optional<OutletOutcome> {
     if (progress) *progress << "verify: DEM at outlet " << mm(w) << " ..." << std::flush;

@@ -156,11 +156,7 @@ StoppingVerification verify_stopping(const std::string& case_file,
   // The layers kept cost nothing: the bisection replays those it would read back before its
   // first new one; when it needs a new one, those of any other search at the angle narrow its
   // band first (made from another band, say), and only the runs still to make are budgeted.
-  const auto earlier_answer = [&](double h) -> std::optional<bool> {
-    const auto near = earlier.lower_bound(h - 0.5 * kLayerGrid);
-    if (near != earlier.end() && near->first <= h + 0.5 * kLayerGrid) return near->second;
-    return std::nullopt;
-  };
+  const auto earlier_answer = [&](double h) { return answered_near(earlier, h, kLayerGrid); };
   const auto kept_answer = [&](double h) -> std::optional<bool> {
     if (const auto answer = earlier_answer(h)) return answer;
     const auto saved =

@@ -12,6 +12,7 @@
 // these runs, not a sharp limit.
 #include <functional>
 #include <limits>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -49,5 +50,15 @@ ThresholdBisection bisect_flow_threshold(double low, double high, double toleran
 
 // The number of judged sizes a bisection of [low, high] to `tolerance` takes when it brackets.
 int bisection_runs(double low, double high, double tolerance);
+
+// The answer judged earlier at a size within `within` / 2 of `size` [m] (an earlier record keeps a
+// size to a nanometre), or none.
+template <class Answer>
+std::optional<Answer> answered_near(const std::map<double, Answer>& judged, double size,
+                                    double within) {
+  const auto near = judged.lower_bound(size - 0.5 * within);
+  if (near != judged.end() && near->first <= size + 0.5 * within) return near->second;
+  return std::nullopt;
+}
 
 }  // namespace feedflow
