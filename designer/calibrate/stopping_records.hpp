@@ -5,8 +5,11 @@
 // bisection of DEM stopping layers. A record is checked to be a chute of the calibrated material
 // whose stopping thickness the particle rung bracketed: to the search's tolerance
 // (results.stopping_thickness on L3) or, for a search cut short, as far as its layers went
-// (results.stopping_thickness_so_far), a wider bracket that is no less true.
+// (results.stopping_thickness_so_far), a wider bracket that is no less true. A bracket on the
+// spheres' floor (results.stopping_thickness_unresolved) is an upper bound: h_stop at most its
+// layer that flowed.
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -21,6 +24,8 @@ struct StoppingRecord {
   double stops_at = 0.0, flows_at = 0.0;  // [m] the thickest layer that rested, the thinnest
                                           // that flowed
   bool so_far = false;  // the bracket of a search cut short, wider than its tolerance
+  // [m] the spheres' radius of its runs, when the record gives it
+  std::optional<double> sphere_radius;
   std::string law;      // the DEM normal law's keyword: "hysteretic_nonlinear2"
   std::string rung;     // in words: "L3 DEM (hysteretic_nonlinear2) periodic layers"
   std::string command;  // the command that verified it (its provenance), or the file's name

@@ -1,8 +1,10 @@
 #include "designer/calibrate/verified_record.hpp"
 
+#include <cmath>
 #include <fstream>
 
 #include "models/core/errors.hpp"
+#include "models/units/quantity_format.hpp"
 
 namespace feedflow {
 namespace {
@@ -71,6 +73,27 @@ std::string VerifiedRecord::dem_law(const std::string& result) const {
     throw InputError(file.string(), "results." + result + ".model",
                      "expected \"DEM (LAW) ...\", got \"" + model + "\"");
   return model.substr(5, close - 5);
+}
+
+std::optional<double> VerifiedRecord::sphere_radius() const {
+  const Json* node = &json;
+  for (const char* k : {"inputs", "material", "dem", "particle", "radius"}) {
+    if (!node->is_object() || !node->contains(k)) return std::nullopt;
+    node = &(*node)[k];
+  }
+  return number({"inputs", "material", "dem", "particle", "radius"}, "the spheres' radius [m]");
+}
+
+void check_sphere_radius(const std::filesystem::path& file, std::optional<double> was,
+                         double radius) {
+  if (was && std::abs(*was - radius) > 1e-9 * radius)
+    throw InputError(file.string(), "inputs.material.dem.particle.radius",
+                     "expected runs of the case's spheres (" + format_quantity(radius, "mm", 4) +
+                         " radius), got " + format_quantity(*was, "mm", 4));
+}
+
+void VerifiedRecord::check_sphere_radius(double radius) const {
+  feedflow::check_sphere_radius(file, sphere_radius(), radius);
 }
 
 std::set<std::string> VerifiedRecord::run_commits() const {

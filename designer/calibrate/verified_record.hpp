@@ -3,6 +3,7 @@
 // as a calibration reads it: its fields by path, each missing or mistyped one an InputError naming
 // the file and the path, and the commits of the programs that made its verification's runs.
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -10,6 +11,12 @@
 #include <nlohmann/json.hpp>
 
 namespace feedflow {
+
+// InputError naming `file` and inputs.material.dem.particle.radius when a record's spheres
+// (`was`, none when it leaves them out) are not `radius` [m]: runs of other spheres answer another
+// question.
+void check_sphere_radius(const std::filesystem::path& file, std::optional<double> was,
+                         double radius);
 
 struct VerifiedRecord {
   std::filesystem::path file;
@@ -25,6 +32,11 @@ struct VerifiedRecord {
   std::string text(const std::vector<std::string>& keys, const std::string& expected) const;
   // The DEM law that results.<result>.model names ("DEM (LAW) ..."); InputError otherwise.
   std::string dem_law(const std::string& result) const;
+  // [m] the radius of the spheres its runs were made of (inputs.material.dem.particle.radius),
+  // none when the record leaves it out (one trimmed to its answers).
+  std::optional<double> sphere_radius() const;
+  // check_sphere_radius on this record.
+  void check_sphere_radius(double radius) const;
 
   // The commits (read from each run.json) of the runs its provenance names, and of the runs beside
   // them (a bisection's runs share its verification folder).

@@ -66,6 +66,7 @@ EarlierArching earlier_arching(const std::filesystem::path& file, const Case& c,
                                const DesignRecord& record, const ArchingVerificationPlan& plan) {
   if (file.empty()) return {};
   const VerifiedRecord j = VerifiedRecord::read(file, "--start-from", "hopper", c.material.name);
+  if (c.material.dem) j.check_sphere_radius(c.material.dem->particle.radius);
   const Hopper& h = std::get<Hopper>(c.equipment);
   const std::string where = file.string();
   if (const std::string shape = j.text({"inputs", "hopper", "shape"}, "wedge or conical");
@@ -183,6 +184,7 @@ EarlierLayers earlier_layers(const std::filesystem::path& file, const Case& c,
   if (r.law != plan.law)
     throw InputError(file.string(), "results.stopping_thickness.model",
                      "expected layers of the " + plan.law + " law, got " + r.law);
+  check_sphere_radius(file, r.sphere_radius, c.material.dem->particle.radius);
   return {{r.stops_at, false}, {r.flows_at, true}};
 }
 
@@ -203,7 +205,10 @@ bool stopping_verification(const VerificationRequest& args, const Case& c,
               << " to " << format_quantity(plan.high, "mm", 3) << " (widened down to "
               << format_quantity(plan.floor, "mm", 3) << " or up to "
               << format_quantity(plan.ceiling, "mm", 3) << " if an edge holds), to "
-              << format_quantity(plan.tolerance, "mm", 3) << ": " << plan.cost << '\n';
+              << format_quantity(plan.tolerance, "mm", 3) << "; an h_stop below "
+              << format_quantity(plan.resolved, "mm", 3) << " ("
+              << format_number(kResolvedLayerDiameters, 2)
+              << " spheres) is their floor, not resolved: " << plan.cost << '\n';
   const EarlierLayers earlier = earlier_layers(args.start_from, c, plan);
   if (args.log && !earlier.empty())
     *args.log << "verify: " << args.start_from.string() << " brackets h_stop at "
