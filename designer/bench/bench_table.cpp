@@ -35,6 +35,13 @@ BenchAnswer answer_of(const BenchPoint& p, const std::map<std::string, BenchRun>
     return a;
   }
   const auto& e = results[p.quantity];
+  // A verification that did not answer on its rung (cut short, or on the spheres' floor) left the
+  // reduced answer in place: it is no answer of the point's.
+  if (!p.verify.empty() && e.value("rung", p.rung) != p.rung) {
+    a.label =
+        "not answered on " + p.rung + " (" + p.quantity + " stays " + e.value("rung", "") + ")";
+    return a;
+  }
   if (p.label_rule && e.at("value").is_number()) {  // a number read as the question's label
     a.label = e["value"].get<double>() > p.label_rule->threshold ? p.label_rule->above : p.label_rule->below;
     return a;

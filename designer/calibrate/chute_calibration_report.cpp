@@ -41,7 +41,7 @@ ChuteCalibration chute_calibration_table(const ChuteCalibrationOutcome& o, const
   c.scene = scene;
   bool first = true;
   for (const auto& x : o.observations)
-    if (!x.held_out) {
+    if (!x.held_out && !x.upper_bound) {  // the deposits' range (a bound only caps the law)
       c.lowest_angle = first ? x.angle : std::min(c.lowest_angle, x.angle);
       c.highest_angle = first ? x.angle : std::max(c.highest_angle, x.angle);
       first = false;

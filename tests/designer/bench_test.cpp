@@ -162,6 +162,30 @@ TEST(BenchTable, ARunNotAtRestIsAnUpperBoundOutOfTheReference) {
   EXPECT_NE(bench_csv({t}).find("done (not at rest: an upper bound)"), std::string::npos);
 }
 
+// A verified point whose verification did not answer on its rung (a stopping bracket on the
+// spheres' floor, a search cut short) leaves the reduced answer in the results: the point has no
+// answer and no reference, rather than taking the reduced model's value as the DEM's.
+TEST(BenchTable, AVerificationThatLeftTheReducedAnswerIsNoAnswer) {
+  BenchQuestion q{"h_stop", "h_stop", "cases/inclined_plane_37.toml", {}, false, {}, {}, {}};
+  BenchPoint layers = point("DEM stopping layers", "L3", ReferenceRole::dem_reference);
+  layers.quantity = "stopping_thickness";
+  layers.verify = "dem";
+  q.points = {layers};
+  std::map<std::string, BenchRun> runs;
+  BenchRun r = number_run("stopping_thickness", 0.0259, 0.0144, 0.042, 30.0);
+  r.results["stopping_thickness"]["rung"] = "L0";
+  runs[point_id(layers)] = r;
+  const BenchQuestionTable left = tabulate(q, runs);
+  EXPECT_FALSE(left.answers[0].value);
+  EXPECT_NE(left.answers[0].label.find("not answered on L3"), std::string::npos)
+      << left.answers[0].label;
+  EXPECT_FALSE(left.reference.value);
+  runs[point_id(layers)].results["stopping_thickness"]["rung"] = "L3";
+  const BenchQuestionTable answered = tabulate(q, runs);
+  ASSERT_TRUE(answered.reference.value);
+  EXPECT_DOUBLE_EQ(*answered.reference.value, 0.0259);
+}
+
 // Levels that do not converge monotonically (the drum at 20 rpm: 36.7, 38.3, 45.7 deg on 20, 10,
 // 5 mm) give no order: the finest run is the reference, with the spread as its error bar, and
 // has no error of its own (it is not a point on the front).
