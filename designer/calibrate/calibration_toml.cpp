@@ -171,7 +171,6 @@ std::string chute_calibration_toml(const ChuteCalibration& c,
     o << "deposit_thickness = " << toml_string(format_number(p.reference * 1e3, 6) + " mm") << "\n";
     o << "error_bar = " << toml_string(format_number(p.error_bar * 1e3, 4) + " mm") << "\n";
     o << "held_out = " << (p.held_out ? "true" : "false") << "\n";
-    o << "upper_bound = " << (p.upper_bound ? "true" : "false") << "\n";
     o << "source = " << toml_string(p.source) << "\n";
   }
   return o.str();

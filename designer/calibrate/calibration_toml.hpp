@@ -45,7 +45,6 @@ struct ChutePointRecord {
   double reference = 0.0;  // deposit thickness mid-ramp [m]
   double error_bar = 0.0;  // [m]
   bool held_out = false;
-  bool upper_bound = false;  // h_stop at most `reference` (the spheres' floor)
   std::string source;
 };
 

@@ -41,7 +41,7 @@ ChuteCalibration chute_calibration_table(const ChuteCalibrationOutcome& o, const
   c.scene = scene;
   bool first = true;
   for (const auto& x : o.observations)
-    if (!x.held_out && !x.upper_bound) {  // the deposits' range (a bound only caps the law)
+    if (!x.held_out) {
       c.lowest_angle = first ? x.angle : std::min(c.lowest_angle, x.angle);
       c.highest_angle = first ? x.angle : std::max(c.highest_angle, x.angle);
       first = false;
@@ -57,8 +57,8 @@ std::vector<ChutePointRecord> chute_point_records(const ChuteCalibrationOutcome&
   std::vector<ChutePointRecord> records;
   for (std::size_t i = 0; i < o.observations.size(); ++i) {
     const auto& x = o.observations[i];
-    records.push_back({x.angle, x.reference, x.error_bar, x.held_out, x.upper_bound,
-                       o.points[o.observed[i]].reference.source});
+    records.push_back(
+        {x.angle, x.reference, x.error_bar, x.held_out, o.points[o.observed[i]].reference.source});
   }
   return records;
 }
@@ -112,27 +112,20 @@ std::string chute_calibration_summary(const ChuteCalibrationOutcome& o,
       static_cast<std::size_t>(std::count_if(o.observations.begin(), o.observations.end(),
                                              [](const StopObservation& x) { return x.held_out; }));
   const StopLawFit& f = o.fit;
-  const auto bounds = static_cast<std::size_t>(
-      std::count_if(o.observations.begin(), o.observations.end(),
-                    [](const StopObservation& x) { return x.upper_bound; }));
   s << "Chute stopping thickness, " << o.material << ", against " << table.rung << " ("
-    << o.observations.size() << " inclinations, " << held << " held out, " << bounds
-    << " upper bound" << (bounds == 1 ? "" : "s") << "; theta1 "
+    << o.observations.size() << " inclinations, " << held << " held out; theta1 "
     << (f.theta1_fitted ? std::string("fitted")
                         : "held at " + format_quantity(f.theta1_before, "deg", 4))
     << "):\n";
   for (std::size_t i = 0; i < o.observations.size(); ++i) {
     const auto& x = o.observations[i];
-    s << "  " << format_quantity(x.angle, "deg", 4) << (x.held_out ? " (held out)" : "") << ": "
-      << (x.upper_bound
-              ? "at most " + format_quantity(x.reference, "mm", 4) + " (the spheres' floor)"
-              : "reference " + format_quantity(x.reference, "mm", 4) + " +- " +
-                    format_quantity(x.error_bar, "mm", 2))
-      << "; design check " << format_quantity(f.thickness_before[i], "mm", 4) << " -> "
+    s << "  " << format_quantity(x.angle, "deg", 4) << (x.held_out ? " (held out)" : "")
+      << ": reference " << format_quantity(x.reference, "mm", 4) << " +- "
+      << format_quantity(x.error_bar, "mm", 2) << "; design check "
+      << format_quantity(f.thickness_before[i], "mm", 4) << " -> "
       << format_quantity(f.thickness_after[i], "mm", 4)
-      << (x.upper_bound ? ", band reaches below it: " : ", band holds it: ")
-      << (f.band_holds_before[i] ? "yes" : "no") << " -> " << (f.band_holds_after[i] ? "yes" : "no")
-      << '\n';
+      << ", band holds it: " << (f.band_holds_before[i] ? "yes" : "no") << " -> "
+      << (f.band_holds_after[i] ? "yes" : "no") << '\n';
   }
   s << "  law: " << law_text(f.theta1_before, f.theta2_before, f.length_before) << " -> "
     << law_text(f.theta1_after, f.theta2_after, f.length_after);
@@ -146,8 +139,6 @@ std::string chute_calibration_summary(const ChuteCalibrationOutcome& o,
   if (held)
     s << ", held-out max " << percent(f.held_out_max_before) << " -> "
       << percent(f.held_out_max_after);
-  if (f.bounds_binding)
-    s << "; held to " << f.bounds_binding << " upper bound" << (f.bounds_binding == 1 ? "" : "s");
   if (!f.failure.empty()) s << " (not fitted: " << f.failure << ")";
   s << '\n';
   for (std::size_t i = 0; i < o.points.size(); ++i)

@@ -19,8 +19,6 @@ namespace {
 
 // A theta2 the fit may not pass: a law that needs it has no stopping angle worth the name.
 constexpr double kSteepestTheta2 = 89.0 * kDegree;
-// The relative weight of a bound the law is held to: it ends within about this of it.
-constexpr double kBoundWeight = 1e-4;
 
 // The law's coefficients: theta2 and L, and theta1 when the fit frees it (else null).
 std::map<std::string, double> coefficients_of(double theta2, double length, const double* theta1) {
@@ -35,19 +33,10 @@ void set_trial(Material& m, double theta2, double length, const double* theta1) 
   c.law.coefficients = coefficients_of(theta2, length, theta1);
 }
 
-// A deposit the law is fitted to (not held out, not an upper bound).
-bool fitted_point(const StopObservation& o) { return !o.held_out && !o.upper_bound; }
-// An upper bound the law must keep below.
-bool fitted_bound(const StopObservation& o) { return !o.held_out && o.upper_bound; }
-
-std::size_t fitted_count(const std::vector<StopObservation>& obs) {
-  return static_cast<std::size_t>(std::count_if(obs.begin(), obs.end(), fitted_point));
-}
-
 // The fitted deposits precise enough to free theta1.
 std::size_t precise_count(const std::vector<StopObservation>& obs) {
   return static_cast<std::size_t>(std::count_if(obs.begin(), obs.end(), [](const auto& o) {
-    return fitted_point(o) && o.error_bar <= kPreciseDeposit * o.reference;
+    return !o.held_out && o.error_bar <= kPreciseDeposit * o.reference;
   }));
 }
 
@@ -61,21 +50,18 @@ void design_figures(const std::vector<StopObservation>& obs, const Material& m,
   for (const auto& o : obs) {
     const StoppingThicknessBand b = stopping_thickness_band(chute, stop, o.angle);
     thickness.push_back(b.nominal.thickness);
-    holds.push_back(b.low <= o.reference && (o.upper_bound || o.reference <= b.high));
+    holds.push_back(b.low <= o.reference && o.reference <= b.high);
   }
 }
 
-// The errors on the deposits (upper bounds have none).
 FitErrors errors_of(const std::vector<double>& thickness, const std::vector<StopObservation>& obs) {
-  std::vector<double> values, references;
+  std::vector<double> references;
   std::vector<bool> held_out;
-  for (std::size_t i = 0; i < obs.size(); ++i)
-    if (!obs[i].upper_bound) {
-      values.push_back(thickness[i]);
-      references.push_back(obs[i].reference);
-      held_out.push_back(obs[i].held_out);
-    }
-  return fit_errors(values, references, held_out);
+  for (const auto& o : obs) {
+    references.push_back(o.reference);
+    held_out.push_back(o.held_out);
+  }
+  return fit_errors(thickness, references, held_out);
 }
 
 std::string deposit_text(const StopObservation& o) {
@@ -86,7 +72,7 @@ std::string deposit_text(const StopObservation& o) {
 std::string inadmissible(const std::vector<StopObservation>& obs, std::optional<double> theta1) {
   std::vector<StopObservation> fitted;
   for (const auto& o : obs)
-    if (fitted_point(o)) fitted.push_back(o);
+    if (!o.held_out) fitted.push_back(o);
   std::sort(fitted.begin(), fitted.end(),
             [](const StopObservation& a, const StopObservation& b) { return a.angle < b.angle; });
   if (theta1)
@@ -106,17 +92,13 @@ std::string inadmissible(const std::vector<StopObservation>& obs, std::optional<
 
 // Least squares over p = (log(tan theta2 - tan of the steepest fitted angle), log L) and, when
 // theta1 is fitted, q with tan theta1 = tan(shallowest fitted angle) / (1 + e^q) (so theta1
-// stays below every fitted deposit); fills f's after values, or throws when the law runs away. A
-// law above upper bounds is fitted again held to them (an active set: the bounds it passes are
-// added, each a stiff residual, until it passes none).
+// stays below every fitted deposit); fills f's after values, or throws when the law runs away.
 void fit_coefficients(const std::vector<StopObservation>& obs, Material& m, StopLawFit& f) {
-  std::vector<std::size_t> fitted, bounds;
+  std::vector<std::size_t> fitted;
   std::vector<double> weight;
   double steepest = 0.0, shallowest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < obs.size(); ++i)
-    if (fitted_bound(obs[i])) bounds.push_back(i);
-  for (std::size_t i = 0; i < obs.size(); ++i)
-    if (fitted_point(obs[i])) {
+    if (!obs[i].held_out) {
       fitted.push_back(i);
       weight.push_back(std::max(kFloorUncertainty, obs[i].error_bar / obs[i].reference));
       steepest = std::max(steepest, std::tan(obs[i].angle));
@@ -133,22 +115,15 @@ void fit_coefficients(const std::vector<StopObservation>& obs, Material& m, Stop
     return Law{std::atan(steepest + std::min(std::exp(p[0]), widest_gap)), std::exp(p[1]),
                f.theta1_fitted ? std::atan(shallowest / (1.0 + std::exp(p[2]))) : f.theta1_before};
   };
-  const auto thickness_at = [&](const Material& chute, double angle) {
-    return stop.evaluate(pouliquen_law_of(*chute.surface_flow), chute, angle).thickness;
-  };
-  std::vector<std::size_t> held;  // the bounds the law is held to
   const auto residuals = [&](std::span<const double> p, std::span<double> r) {
     const Law law = law_of(p);
     set_trial(m, law.theta2, law.length, f.theta1_fitted ? &law.theta1 : nullptr);
     const Material chute = chute_material(m);
     for (std::size_t k = 0; k < fitted.size(); ++k) {
       const StopObservation& o = obs[fitted[k]];
-      r[k] = std::log(thickness_at(chute, o.angle) / o.reference) / weight[k];
-    }
-    for (std::size_t k = 0; k < held.size(); ++k) {
-      const StopObservation& o = obs[held[k]];
-      const double h = std::max(thickness_at(chute, o.angle), 1e-6 * o.reference);
-      r[fitted.size() + k] = std::log(h / o.reference) / kBoundWeight;
+      const double h =
+          stop.evaluate(pouliquen_law_of(*chute.surface_flow), chute, o.angle).thickness;
+      r[k] = std::log(h / o.reference) / weight[k];
     }
   };
   const double start_gap = std::tan(f.theta2_before) - steepest;
@@ -157,20 +132,7 @@ void fit_coefficients(const std::vector<StopObservation>& obs, Material& m, Stop
     const double ratio = shallowest / std::tan(f.theta1_before);
     start.push_back(ratio > 1.0 ? std::log(ratio - 1.0) : 0.0);
   }
-  LeastSquaresFit fit = least_squares(residuals, start, fitted.size());
-  for (;;) {
-    const Law law = law_of(fit.parameters);
-    set_trial(m, law.theta2, law.length, f.theta1_fitted ? &law.theta1 : nullptr);
-    const Material chute = chute_material(m);
-    const std::size_t before = held.size();
-    for (std::size_t i : bounds)
-      if (std::find(held.begin(), held.end(), i) == held.end() &&
-          thickness_at(chute, obs[i].angle) > obs[i].reference * (1.0 + 10.0 * kBoundWeight))
-        held.push_back(i);
-    if (held.size() == before) break;
-    fit = least_squares(residuals, fit.parameters, fitted.size() + held.size());
-  }
-  f.bounds_binding = held.size();
+  const LeastSquaresFit fit = least_squares(residuals, start, fitted.size());
   const Law law = law_of(fit.parameters);
   if (!(law.theta2 < kSteepestTheta2))
     throw std::runtime_error(
@@ -194,7 +156,7 @@ void fit_coefficients(const std::vector<StopObservation>& obs, Material& m, Stop
 }  // namespace
 
 StopLawFit fit_stop_law(const std::vector<StopObservation>& obs, Material m) {
-  if (fitted_count(obs) == 0)
+  if (std::none_of(obs.begin(), obs.end(), [](const StopObservation& o) { return !o.held_out; }))
     throw std::invalid_argument("a stopping-thickness fit needs observations to fit");
   if (!m.surface_flow)
     throw std::invalid_argument("a stopping-thickness fit needs the material's [surface_flow]");
@@ -234,10 +196,9 @@ StopLawFit fit_stop_law(const std::vector<StopObservation>& obs, Material m) {
   f.held_out_max_after = after.held_out_max;
 
   f.law.coefficients = coefficients_of(f.theta2_after, f.length_after, theta1);
-  set_error_figures(f.law, before, after,
-                    std::any_of(obs.begin(), obs.end(), [](const StopObservation& o) {
-                      return o.held_out && !o.upper_bound;
-                    }));
+  set_error_figures(
+      f.law, before, after,
+      std::any_of(obs.begin(), obs.end(), [](const StopObservation& o) { return o.held_out; }));
   // The band after: the check's with the calibration's figures (widened by its error).
   calibrated.calibration->chute->law = f.law;
   design_figures(obs, calibrated, f.thickness_after, f.band_holds_after);

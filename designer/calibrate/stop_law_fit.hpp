@@ -7,8 +7,7 @@
 // fit), and measures the check before and after on the fitted and the held-out inclinations.
 // Deposits no such law can hold (thicker at a steeper inclination, thinning more slowly than any
 // theta2 below 89 deg allows, a deposit at or below a held theta1) leave the law as published and
-// say why. An upper bound (h_stop at most its reference, where the rung's layers sit on their
-// spheres' floor) is not a point of the fit: a law above it is pulled down to it.
+// say why.
 #include <string>
 #include <vector>
 
@@ -22,12 +21,11 @@ struct StopObservation {
   double reference = 0.0;  // [m] deposit thickness mid-ramp, normal to the ramp
   double error_bar = 0.0;  // [m]
   bool held_out = false;
-  bool upper_bound = false;  // h_stop at most `reference` (a bracket on the spheres' floor)
 };
 
-// Fitted inclinations (not counting upper bounds) from which theta1 is fitted too (below, the
-// material's is held), each deposit known to kPreciseDeposit of itself: a wider bracket (a search
-// cut short early) still counts in the fit but leaves theta1 free to run off.
+// Fitted inclinations from which theta1 is fitted too (below, the material's is held), each
+// deposit known to kPreciseDeposit of itself: a wider bracket (a search cut short early) still
+// counts in the fit but leaves theta1 free to run off.
 constexpr std::size_t kFittedForTheta1 = 3;
 constexpr double kPreciseDeposit = 0.25;
 
@@ -43,8 +41,7 @@ struct StopLawFit {
   std::vector<bool> band_holds_before, band_holds_after;       // its band holds the reference
   double fit_rms_before = 0.0, fit_rms_after = 0.0;            // relative error, fitted points
   double held_out_max_before = 0.0, held_out_max_after = 0.0;  // largest relative error, held out
-  std::size_t bounds_binding = 0;  // upper bounds the law had to be pulled down to
-  std::string failure;             // why the law kept its published theta2 and L
+  std::string failure;  // why the law kept its published theta2 and L
   CalibratedModel law;  // coefficients and figures, for the material
 };
 

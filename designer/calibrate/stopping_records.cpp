@@ -10,15 +10,12 @@ StoppingRecord read_stopping_record(const std::filesystem::path& path, const std
   const VerifiedRecord j = VerifiedRecord::read(path, option, "chute", material);
   const std::string file = path.string();
   StoppingRecord r;
-  // The search's bracket when it reached its tolerance, else (no L3 stopping thickness) the one
-  // on the spheres' floor, or as far as its layers went.
+  // The search's bracket when it reached its tolerance, else (no L3 stopping thickness) as far as
+  // its layers went.
   std::string entry = "stopping_thickness";
   const std::string rung =
       j.text({"results", entry, "rung"}, "the rung that verified the stopping thickness");
-  if (rung != "L3" && j.json["results"].contains(entry + "_unresolved")) {
-    entry += "_unresolved";
-    r.observation.upper_bound = true;
-  } else if (rung != "L3" && j.json["results"].contains(entry + "_so_far")) {
+  if (rung != "L3" && j.json["results"].contains(entry + "_so_far")) {
     entry += "_so_far";
     r.so_far = true;
   } else if (rung != "L3") {
@@ -34,9 +31,8 @@ StoppingRecord read_stopping_record(const std::filesystem::path& path, const std
   if (!(r.stops_at > 0.0 && r.stops_at < r.flows_at))
     throw InputError(file, key, "expected a bracket: a layer that rested below one that flowed");
   r.observation.angle = j.number({"inputs", "chute", "angle"}, "the plane's angle [rad]");
-  r.observation.reference =
-      r.observation.upper_bound ? r.flows_at : 0.5 * (r.stops_at + r.flows_at);
-  r.observation.error_bar = r.observation.upper_bound ? 0.0 : 0.5 * (r.flows_at - r.stops_at);
+  r.observation.reference = 0.5 * (r.stops_at + r.flows_at);
+  r.observation.error_bar = 0.5 * (r.flows_at - r.stops_at);
   r.sphere_radius = j.sphere_radius();
   // "DEM (hysteretic_nonlinear2) periodic layers at 42 deg: rests at ..." -> the law, the rung in
   // words.

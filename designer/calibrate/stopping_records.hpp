@@ -5,9 +5,7 @@
 // bisection of DEM stopping layers. A record is checked to be a chute of the calibrated material
 // whose stopping thickness the particle rung bracketed: to the search's tolerance
 // (results.stopping_thickness on L3) or, for a search cut short, as far as its layers went
-// (results.stopping_thickness_so_far), a wider bracket that is no less true. A bracket on the
-// spheres' floor (results.stopping_thickness_unresolved) is an upper bound: h_stop at most its
-// layer that flowed.
+// (results.stopping_thickness_so_far), a wider bracket that is no less true.
 #include <filesystem>
 #include <optional>
 #include <set>

@@ -314,12 +314,11 @@ void observe_stopping_records(const CalibrateArguments& args, const Material& ma
         }))
       throw InputError("--held-out", format_quantity(angle, "deg", 4),
                        "the angle of one of the --stopping records");
-  if (std::count_if(records.begin(), records.end(), [](const StoppingRecord& r) {
-        return !r.observation.held_out && !r.observation.upper_bound;
-      }) < 2)
+  if (std::count_if(records.begin(), records.end(),
+                    [](const StoppingRecord& r) { return !r.observation.held_out; }) < 2)
     throw InputError("--stopping", std::to_string(records.size()) + " record(s)",
                      "a chute calibration fits theta2 and L: records at two inclinations at "
-                     "least, not held out and not on the spheres' floor (an upper bound only)");
+                     "least, not held out");
   o.design.against = "dem";
   o.rung = records.front().rung + ", read from verified designs";
   for (const auto& r : records) {
@@ -329,12 +328,9 @@ void observe_stopping_records(const CalibrateArguments& args, const Material& ma
     point.reference.value = r.observation.reference;
     point.reference.error_bar = r.observation.error_bar;
     point.reference.unit = "m";
-    point.reference.source =
-        (r.observation.upper_bound ? "at most " + format_quantity(r.flows_at, "mm", 4) + ": "
-                                   : std::string()) +
-        "rests at " + format_quantity(r.stops_at, "mm", 4) + ", flows at " +
-        format_quantity(r.flows_at, "mm", 4) + (r.so_far ? ", its search cut short" : "") +
-        (r.observation.upper_bound ? ", on the spheres' floor" : "") + " (" + r.command + ")";
+    point.reference.source = "rests at " + format_quantity(r.stops_at, "mm", 4) + ", flows at " +
+                             format_quantity(r.flows_at, "mm", 4) +
+                             (r.so_far ? ", its search cut short" : "") + " (" + r.command + ")";
     o.points.push_back(std::move(point));
     o.observed.push_back(o.observations.size());
     o.observations.push_back(r.observation);

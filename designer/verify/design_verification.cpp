@@ -205,10 +205,7 @@ bool stopping_verification(const VerificationRequest& args, const Case& c,
               << " to " << format_quantity(plan.high, "mm", 3) << " (widened down to "
               << format_quantity(plan.floor, "mm", 3) << " or up to "
               << format_quantity(plan.ceiling, "mm", 3) << " if an edge holds), to "
-              << format_quantity(plan.tolerance, "mm", 3) << "; an h_stop below "
-              << format_quantity(plan.resolved, "mm", 3) << " ("
-              << format_number(kResolvedLayerDiameters, 2)
-              << " spheres) is their floor, not resolved: " << plan.cost << '\n';
+              << format_quantity(plan.tolerance, "mm", 3) << ": " << plan.cost << '\n';
   const EarlierLayers earlier = earlier_layers(args.start_from, c, plan);
   if (args.log && !earlier.empty())
     *args.log << "verify: " << args.start_from.string() << " brackets h_stop at "

@@ -109,7 +109,6 @@ StoppingVerificationPlan plan_stopping_verification(const Case& c, const DesignR
   plan.tolerance = tolerance > 0.0 ? tolerance : d;
   plan.floor = d;
   plan.ceiling = kLayerCeilingDiameters * d;
-  plan.resolved = kResolvedLayerDiameters * d;
   if (plan.tolerance > 0.25 * (plan.ceiling - plan.floor))
     throw InputError("--thickness-tolerance", format_quantity(plan.tolerance, "mm", 3),
                      "at most a quarter of the layers' range (" + mm(plan.floor) + " .. " +
@@ -246,30 +245,6 @@ void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& 
                                ", cut short at " + mm(b.flows_at - b.stops_at) + " of " +
                                mm(plan.tolerance) + ": rests at " + mm(b.stops_at) + ", flows at " +
                                mm(b.flows_at)));
-  } else if (b.end == End::bracketed && b.flows_at < plan.resolved) {
-    // On the spheres' floor: only the layer that flowed says something (h_stop at most it).
-    const bool above = plan.reduced_low && *plan.reduced_low > b.flows_at;
-    record.results.emplace_back(
-        "stopping_thickness_unresolved",
-        particle_bracket(b.stops_at, b.flows_at,
-                         "DEM (" + plan.law + ") periodic layers at " + angle + ": rests at " +
-                             mm(b.stops_at) + ", flows at " + mm(b.flows_at) + ", within " +
-                             format_number(kResolvedLayerDiameters, 2) + " sphere diameters (" +
-                             mm(plan.resolved) + "): h_stop at most " + mm(b.flows_at)));
-    note = "stopping thickness " + std::string(above ? "contradicted" : "not resolved") +
-           " on the " + rung + ": a layer " + mm(b.stops_at) + " thick comes to rest, one " +
-           mm(b.flows_at) + " thick flows on, within " + format_number(kResolvedLayerDiameters, 2) +
-           " sphere diameters (" + mm(plan.resolved) +
-           "), where h_stop follows the spheres' size (finer spheres flow thinner), so h_stop is "
-           "at most " +
-           mm(b.flows_at) +
-           (above ? ", below the reduced band " + mm(*plan.reduced_low) + " .. " +
-                        mm(*plan.reduced_high)
-                  : std::string()) +
-           "; the reduced answer stands (" + std::to_string(b.steps.size()) +
-           " layers: " + outcomes(b) + "; " + runs +
-           "); spheres half the size resolve more: --set material.dem.particle.radius=" +
-           millimetres_setting(0.25 * plan.floor);
   } else if (b.end == End::bracketed) {
     const Estimate h =
         particle_bracket(b.stops_at, b.flows_at,

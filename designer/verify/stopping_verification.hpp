@@ -24,11 +24,6 @@ namespace feedflow {
 
 // The thickest layer the search may try, in sphere diameters.
 constexpr double kLayerCeilingDiameters = 40.0;
-// The thinnest h_stop the layers resolve, in sphere diameters: below it h_stop is the spheres'
-// floor (the seed's law at 42 deg: 8.18-10.6 mm with spheres of 1.5 mm radius, 3.38-4.58 mm with
-// 0.75 mm, about three diameters both times), and a bracket there says only that h_stop is at most
-// its thinner layer that flowed (finer spheres flow thinner).
-constexpr double kResolvedLayerDiameters = 5.0;
 // [m] every layer's thickness lies on this grid, so the search asks the same layers when it
 // starts again from the thicknesses its folders are named by (a layer cut short is continued,
 // not made afresh under a name a digit apart).
@@ -47,7 +42,6 @@ struct StoppingVerificationPlan {
   double low = 0.0, high = 0.0;       // [m] the band searched first: the reduced one, at least a
                                       // sphere up and two tolerances wide
   double floor = 0.0, ceiling = 0.0;  // [m] how far it may widen: one sphere, the ceiling
-  double resolved = 0.0;              // [m] the thinnest h_stop it resolves
   double tolerance = 0.0;             // [m]
   int runs = 0;                       // layers judged when the band holds h_stop
   double seconds = 0.0;               // [s] their estimate (at the band's middle)
@@ -93,9 +87,7 @@ StoppingVerification verify_stopping(const std::string& case_file,
 // contradicted (it lies outside it), with the layers and the runs' time. A search cut short with
 // a layer at rest below one that flows leaves its bracket so far beside the reduced one
 // (stopping_thickness_so_far, not judged), where `--start-from` and `calibrate --stopping` read
-// it. A bracket whose layer that flowed is thinner than plan.resolved leaves the reduced answer
-// standing and the bracket beside it (stopping_thickness_unresolved, an upper bound): the note says
-// so, contradicted only when the reduced band lies wholly above it, and names finer spheres.
+// it.
 void apply_stopping_verification(const Case& c, const StoppingVerificationPlan& plan,
                                  const StoppingVerification& v, DesignRecord& record);
 
