@@ -35,8 +35,8 @@ BenchAnswer answer_of(const BenchPoint& p, const std::map<std::string, BenchRun>
     return a;
   }
   const auto& e = results[p.quantity];
-  // A verification that did not answer on its rung (cut short, or on the spheres' floor) left the
-  // reduced answer in place: it is no answer of the point's.
+  // A verification that did not answer on its rung (a search cut short) left the reduced answer
+  // in place: it is no answer of the point's.
   if (!p.verify.empty() && e.value("rung", p.rung) != p.rung) {
     a.label =
         "not answered on " + p.rung + " (" + p.quantity + " stays " + e.value("rung", "") + ")";

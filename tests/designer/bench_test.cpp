@@ -162,9 +162,9 @@ TEST(BenchTable, ARunNotAtRestIsAnUpperBoundOutOfTheReference) {
   EXPECT_NE(bench_csv({t}).find("done (not at rest: an upper bound)"), std::string::npos);
 }
 
-// A verified point whose verification did not answer on its rung (a stopping bracket on the
-// spheres' floor, a search cut short) leaves the reduced answer in the results: the point has no
-// answer and no reference, rather than taking the reduced model's value as the DEM's.
+// A verified point whose verification did not answer on its rung (a search cut short) leaves the
+// reduced answer in the results: the point has no answer and no reference, rather than taking the
+// reduced model's value as the DEM's.
 TEST(BenchTable, AVerificationThatLeftTheReducedAnswerIsNoAnswer) {
   BenchQuestion q{"h_stop", "h_stop", "cases/inclined_plane_37.toml", {}, false, {}, {}, {}};
   BenchPoint layers = point("DEM stopping layers", "L3", ReferenceRole::dem_reference);

@@ -180,7 +180,7 @@ TEST(ArchingVerification, TheDesignOutletsRunVerifiesAConesFlowPattern) {
 // with the twin's 10 mm design outlet, which arched) beside the reduced width, unjudged; its
 // record alone, on a machine without the runs, answers the design outlet and both widths, so the
 // search starts inside them and asks for the 4 runs still to make (bisecting 18-48 mm to 2 mm);
-// a record of another semi-angle is refused naming its key.
+// a record of another semi-angle, or of other spheres, is refused naming its key.
 TEST(ArchingVerification, ASearchCutShortLeavesABracketToStartFrom) {
   BenchQuestion q;
   q.case_file = "tests/data/dem_hopper_twin.toml";
@@ -241,6 +241,16 @@ TEST(ArchingVerification, ASearchCutShortLeavesABracketToStartFrom) {
     ADD_FAILURE() << "a record of another semi-angle started the search";
   } catch (const InputError& e) {
     EXPECT_EQ(e.key(), "inputs.hopper.semi_angle") << e.what();
+  }
+  // Nor one of other spheres (the record gives its radius).
+  Case finer = c;
+  finer.material.dem->particle.radius *= 0.5;
+  DesignRecord finer_record = design_check(finer, ModelChoices{});
+  try {
+    verify_design(elsewhere, finer, finer_record);
+    ADD_FAILURE() << "a record of other spheres started the search";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "inputs.material.dem.particle.radius") << e.what();
   }
   std::filesystem::remove_all(request.runs);
   std::filesystem::remove_all(elsewhere.runs);
