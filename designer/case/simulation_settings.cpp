@@ -34,6 +34,11 @@ std::span<const FieldSpec<DemCaseSettings>> dem_case_fields() {
           "and tilted to the chute's angle, that comes to rest or flows on (Pouliquen's "
           "h_stop; design --verify dem bisects it) instead of the bin released down the ramp"),
       optional_number_field<S>(
+          "stopping_layer_length", &S::stopping_layer_length, dim::length, "mm",
+          Range{0.0, 1.0, false, true},
+          "a stopping layer's periodic length down the slope, in whole saw teeth (default 20 "
+          "sphere diameters; a layer about as thick as its box may be held by it)"),
+      optional_number_field<S>(
           "end_time", &S::end_time, dim::time, "s", kTimeRange,
           "simulated time after filling (default: until converged or stopped; a stopping "
           "layer: at rest, run away, steady from 4 s after the tilt on, or at most 10 s, or this)"),

@@ -13,6 +13,7 @@ struct DemCaseSettings {
   std::optional<double> slab_depth;         // [m] periodic slab depth; none: the scene's default
   std::optional<double> sector_angle;       // [rad] of a conical hopper simulated; none: whole
   std::optional<double> stopping_layer;     // [m] a chute's run as a periodic layer this thick
+  std::optional<double> stopping_layer_length;  // [m] its periodic length down the slope
   std::optional<double> end_time;           // [s] simulated time after filling (--time wins)
   std::optional<double> snapshot_interval;  // [s] between HDF5 particle snapshots
   std::optional<double> time_step;          // [s] below the stable step (warned) or forced

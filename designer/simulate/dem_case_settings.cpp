@@ -12,6 +12,10 @@ DemSettings dem_case_settings(const Case& c, const DemRanks& ranks) {
   if (c.dem.stopping_layer && c.kind() != EquipmentKind::chute)
     throw InputError(c.file, "dem.stopping_layer",
                      "a stopping layer is an inclined plane's (chute's) scene; leave the key out");
+  if (c.dem.stopping_layer_length && !c.dem.stopping_layer)
+    throw InputError(c.file, "dem.stopping_layer_length",
+                     "the periodic length of a stopping layer: set dem.stopping_layer too, or "
+                     "leave the key out");
   DemSettings s;
   s.material = *c.material.dem;
   s.law = choose_contact_law(c.dem.normal_law, {}, {}, c.dem.cohesion);  // checked on loading

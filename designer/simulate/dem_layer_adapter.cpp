@@ -21,6 +21,7 @@ StoppingLayerSpec stopping_layer_spec(const Case& c, const DemSettings& settings
   spec.angle = chute.angle;
   spec.thickness = *c.dem.stopping_layer;
   if (c.dem.slab_depth) spec.slab_depth = *c.dem.slab_depth;  // else the seed's slab
+  if (c.dem.stopping_layer_length) spec.length = *c.dem.stopping_layer_length;  // else 20 spheres
   if (c.dem.random_seed) spec.seed = static_cast<unsigned>(*c.dem.random_seed);
   require_periodic_faces(c, "stopping-layer");
   require_slab_depth(c, settings, spec.slab_depth);

@@ -7,6 +7,8 @@
 #include <filesystem>
 
 #include "designer/case/case_loader.hpp"
+#include "designer/simulate/dem_case_settings.hpp"
+#include "designer/simulate/dem_layer_adapter.hpp"
 #include "designer/simulate/simulation.hpp"
 #include "fullsim/dem/dem_checkpoint.hpp"
 #include "models/core/errors.hpp"
@@ -111,6 +113,29 @@ TEST(DemLayerSimulation, TheKeyIsCheckedAndBelongsToChutes) {
     EXPECT_NE(std::string(e.what()).find("chute"), std::string::npos) << e.what();
   }
   fs::remove_all(thin.out);
+}
+
+// The layer's periodic length is the case's, in whole saw teeth (one diameter each: 45 mm of 6 mm
+// spheres is 8 teeth, 48 mm), 20 diameters without it; without a stopping layer the key is
+// refused naming it.
+TEST(DemLayerSimulation, ThePeriodicLengthIsTheCasesInWholeTeeth) {
+  const auto length_of = [](std::vector<SetOverride> sets) {
+    const Case c = load_case("tests/data/dem_layer_twin.toml", sets);
+    const DemSettings settings = dem_case_settings(c);
+    return StoppingLayerScene(settings, stopping_layer_spec(c, settings)).length();
+  };
+  EXPECT_NEAR(length_of({{"dem.stopping_layer_length", "45 mm"}}), 0.048, 1e-12);
+  EXPECT_NEAR(length_of({}), 0.120, 1e-12);
+  Case chute_run = load_case("tests/data/dem_layer_twin.toml",
+                             std::vector<SetOverride>{{"dem.stopping_layer_length", "45 mm"}});
+  chute_run.dem.stopping_layer.reset();  // the bin released down the ramp
+  try {
+    (void)dem_case_settings(chute_run);
+    FAIL() << "a periodic length without a stopping layer was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dem.stopping_layer_length"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
