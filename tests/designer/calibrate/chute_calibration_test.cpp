@@ -114,8 +114,8 @@ TEST(StopLawFit, TwoInclinationsInvertTheLawExactly) {
 }
 
 // Three fitted inclinations free theta1 only when each deposit is known to a quarter of itself: a
-// search cut short early (34 deg: 27.6-82.4 mm) counts in the fit but leaves theta1 held, so the
-// two precise deposits still set theta2 and L.
+// search cut short early (27.6-82.4 mm, the 34 deg search after two layers) counts in the fit but
+// leaves theta1 held, so the two precise deposits still set theta2 and L.
 TEST(StopLawFit, AWideBracketCountsButDoesNotFreeTheta1) {
   auto obs = deposits_made_by(40 * kDegree, 78e-3, {35, 37}, {});
   obs.push_back({34 * kDegree, 55e-3, 27.4e-3, false});
