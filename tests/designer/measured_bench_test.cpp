@@ -76,8 +76,9 @@ TEST(MeasuredBench, CheapestWithinATolerance) {
 // The 37 deg plane's reference is the particle rung's (the seed's law in stopping layers bisected
 // to one sphere in the default 60 mm periodic length: rests at 26.52 mm, flows at 28.24 mm, 27.38
 // mm, 1 756 s on one thread), its error bar reaching down to the bracket in a 120 mm length
-// (23.93-26.52 mm): the layers' h_stop is not converged in the periodic length, so the reference
-// cannot tell 10 % (3.45 mm, 12.6 %); within 25 % the cheapest answer is a reduced one in a third
+// (23.93-26.52 mm; in 240 mm the 26.52 mm layer rests again): near the threshold a layer's answer
+// changes with the periodic length and its fill, so the reference cannot tell 10 % (3.45 mm,
+// 12.6 %); within 25 % the cheapest answer is a reduced one in a third
 // of a second (the chute law calibrated on the 60 mm brackets: 25.87 mm; the L1 deposit 25.48 mm).
 TEST(MeasuredBench, ThePlanesParticleReferenceAt37Deg) {
   const MeasuredQuestion& plane = *measured_bench().find("chute_stopping_thickness_37");
