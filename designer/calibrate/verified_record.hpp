@@ -35,8 +35,6 @@ struct VerifiedRecord {
   // [m] the radius of the spheres its runs were made of (inputs.material.dem.particle.radius),
   // none when the record leaves it out (one trimmed to its answers).
   std::optional<double> sphere_radius() const;
-  // check_sphere_radius on this record.
-  void check_sphere_radius(double radius) const;
 
   // The commits (read from each run.json) of the runs its provenance names, and of the runs beside
   // them (a bisection's runs share its verification folder).

@@ -66,7 +66,7 @@ EarlierArching earlier_arching(const std::filesystem::path& file, const Case& c,
                                const DesignRecord& record, const ArchingVerificationPlan& plan) {
   if (file.empty()) return {};
   const VerifiedRecord j = VerifiedRecord::read(file, "--start-from", "hopper", c.material.name);
-  if (c.material.dem) j.check_sphere_radius(c.material.dem->particle.radius);
+  if (c.material.dem) check_sphere_radius(file, j.sphere_radius(), c.material.dem->particle.radius);
   const Hopper& h = std::get<Hopper>(c.equipment);
   const std::string where = file.string();
   if (const std::string shape = j.text({"inputs", "hopper", "shape"}, "wedge or conical");
